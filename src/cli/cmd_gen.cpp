@@ -1,0 +1,86 @@
+// dpdrng gen: a generator's counter-mode stream, for external batteries (dieharder -g 200, PractRand stdin64).
+#include <unistd.h>
+
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <memory>
+#include <vector>
+
+#include "dpdrng/cli/options.hpp"
+#include "dpdrng/cli/registry.hpp"
+#include "dpdrng/common/error.hpp"
+#include "dpdrng/rng/stream.hpp"
+
+namespace dpdrng::cli {
+namespace {
+
+struct GenArgs {
+  GeneratorOptions gen;
+  std::string seeding = "counter";
+  std::uint64_t start = 0;
+  std::uint64_t count = 0;
+  std::string format = "hex";
+};
+
+// Returns false when the reader has gone away (closed pipe): a normal end, not an error.
+bool write_all(const void* data, std::size_t bytes) {
+  if (std::fwrite(data, 1, bytes, stdout) == bytes) return true;
+  if (errno == EPIPE) return false;
+  throw std::runtime_error("write to standard output failed");
+}
+
+void run_gen(const GenArgs& a) {
+  const rng::GeneratorSpec spec = a.gen.spec();
+  if (rng::parse_seeding(a.seeding) != rng::Seeding::counter)
+    throw InputError("gen writes standalone streams: --seeding must be 'counter' (pair seedings need a DPD run)");
+  const bool raw = a.format == "raw";
+  if (raw && isatty(STDOUT_FILENO)) throw InputError("refusing to write raw binary to a terminal; pipe or redirect it");
+  std::signal(SIGPIPE, SIG_IGN);
+  const std::uint64_t per_call = rng::words_per_call(spec);
+  const std::uint64_t total = a.count * per_call;
+  std::vector<std::uint64_t> buf(std::size_t{1} << 16);
+  std::string text;
+  for (std::uint64_t done = 0; done < total;) {
+    const std::size_t n = static_cast<std::size_t>(std::min<std::uint64_t>(buf.size(), total - done));
+    rng::fill_stream(spec, a.start, done, std::span(buf.data(), n));
+    done += n;
+    if (raw) {
+      // Little-endian words: this machine's byte order, checked at compile time below.
+      static_assert(std::endian::native == std::endian::little);
+      if (!write_all(buf.data(), n * sizeof(std::uint64_t))) return;
+      continue;
+    }
+    text.clear();
+    char line[24];
+    for (std::size_t k = 0; k < n; ++k) {
+      std::snprintf(line, sizeof line, "%016llx\n", static_cast<unsigned long long>(buf[k]));
+      text += line;
+    }
+    if (!write_all(text.data(), text.size())) return;
+  }
+  if (std::fflush(stdout) != 0 && errno != EPIPE) throw std::runtime_error("write to standard output failed");
+}
+
+const bool registered = register_command(10, [](CLI::App& root) {
+  auto args = std::make_shared<GenArgs>();
+  CLI::App* sub = root.add_subcommand("gen", "write a generator's counter-mode stream (hex lines or raw binary)");
+  sub->footer(
+      "Call i hashes counter start+i. tea32: low word -> x0, high -> x1, output (x1'<<32)|x0'.\n"
+      "tea64: x0 = start+i, x1 = 0, outputs a then b. philox4x32: counter (start+i, 0), key (k0, k1),\n"
+      "outputs (c1:c0) then (c3:c2). threefry2x64: counter (start+i, 0), key (k1:k0, k3:k2).\n"
+      "splitmix64: the published stream seeded with start. mt19937: std::mt19937 seeded with\n"
+      "lo32(start)^hi32(start), two draws a word, high first.\n"
+      "raw = little-endian 64-bit words (dieharder -g 200, PractRand stdin64).");
+  args->gen.add_to(*sub);
+  sub->add_option("--seeding", args->seeding, "only 'counter' makes a standalone stream")->capture_default_str();
+  sub->add_option("--start", args->start, "first counter value (or seed for splitmix64/mt19937)")->capture_default_str();
+  sub->add_option("--count", args->count, "number of generator calls")->required();
+  sub->add_option("--format", args->format, "hex (one 16-digit word a line) or raw")
+      ->check(CLI::IsMember({"hex", "raw"}))
+      ->capture_default_str();
+  sub->callback([args] { run_gen(*args); });
+});
+
+}  // namespace
+}  // namespace dpdrng::cli

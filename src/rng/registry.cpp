@@ -1,0 +1,90 @@
+#include "dpdrng/rng/registry.hpp"
+
+#include <array>
+#include <string>
+
+#include "dpdrng/common/error.hpp"
+
+namespace dpdrng::rng {
+
+namespace {
+constexpr std::array kGenerators{
+    GeneratorInfo{"tea32", 32, 1, 64,
+                  "Wheeler & Needham (1994) recommend 32 cycles (64 Feistel rounds); the paper asks whether 1 will do",
+                  "32TEA(n): 64-bit seed split into two 32-bit words (low -> x0), n TEA cycles, joined (x1'<<32)|x0'",
+                  true},
+    GeneratorInfo{"tea64", 32, 1, 64, "no published analysis; the paper's 64-bit variant of TEA's cycle",
+                  "64TEA(n): TEA's cycle on 64-bit words, inputs (x0, x1), outputs a and b", true},
+    GeneratorInfo{"philox4x32", 10, 1, 16,
+                  "Salmon et al. (SC'11): 7 rounds pass BigCrush, 10 (the default) adds a safety margin",
+                  "Philox4x32-R from Random123: 128-bit counter, 64-bit key, 128-bit output", true},
+    GeneratorInfo{"threefry2x64", 20, 1, 32,
+                  "Salmon et al. (SC'11): 13 rounds pass BigCrush, 20 (the default) adds a safety margin",
+                  "Threefry2x64-R from Random123: 128-bit counter, 128-bit key, 128-bit output", true},
+    GeneratorInfo{"splitmix64", 1, 1, 1, "fixed finaliser, no round parameter; passes BigCrush (Steele et al. 2014)",
+                  "SplitMix64: Weyl sequence (gamma 0x9e3779b97f4a7c15) through Stafford's mix13 finaliser", true},
+    GeneratorInfo{"mt19937", 1, 1, 1, "the reference; no round parameter",
+                  "MT19937 (32-bit, std::mt19937 = gsl_rng_mt19937); two draws make a 64-bit word, high first",
+                  false},
+};
+}  // namespace
+
+std::span<const GeneratorInfo> generator_table() { return kGenerators; }
+
+const GeneratorInfo& find_generator(std::string_view name) {
+  std::string known;
+  for (const auto& g : kGenerators) {
+    if (g.name == name) return g;
+    known += (known.empty() ? "" : ", ") + std::string(g.name);
+  }
+  throw InputError("unknown generator '" + std::string(name) + "' (known: " + known + ")");
+}
+
+GeneratorSpec validated(GeneratorSpec spec) {
+  const GeneratorInfo& info = find_generator(spec.name);
+  if (spec.rounds == 0) spec.rounds = info.default_rounds;
+  if (spec.rounds < info.min_rounds || spec.rounds > info.max_rounds)
+    throw InputError("rounds " + std::to_string(spec.rounds) + " out of range for " + spec.name + " (" +
+                     std::to_string(info.min_rounds) + ".." + std::to_string(info.max_rounds) + ")");
+  return spec;
+}
+
+std::string describe(const GeneratorSpec& spec) {
+  if (find_generator(spec.name).max_rounds == 1) return spec.name;
+  return spec.name + "(" + std::to_string(spec.rounds) + ")";
+}
+
+void throw_not_keyed_hash(std::string_view name) {
+  find_generator(name);
+  throw InputError(std::string(name) + " is a sequential stream, not a keyed hash: it cannot seed per pair");
+}
+
+void throw_counter_not_pair_seeding() {
+  throw InputError("seeding 'counter' makes standalone streams; pair noise needs 'distance' or 'pair-step'");
+}
+
+Seeding parse_seeding(std::string_view name) {
+  if (name == "distance") return Seeding::distance;
+  if (name == "pair-step") return Seeding::pair_step;
+  if (name == "counter") return Seeding::counter;
+  throw InputError("unknown seeding '" + std::string(name) + "' (known: distance, pair-step, counter)");
+}
+
+std::string_view to_string(Seeding s) {
+  switch (s) {
+    case Seeding::distance: return "distance";
+    case Seeding::pair_step: return "pair-step";
+    case Seeding::counter: return "counter";
+  }
+  return "?";
+}
+
+Distribution parse_distribution(std::string_view name) {
+  if (name == "gauss") return Distribution::gauss;
+  if (name == "uniform") return Distribution::uniform;
+  throw InputError("unknown distribution '" + std::string(name) + "' (known: gauss, uniform)");
+}
+
+std::string_view to_string(Distribution d) { return d == Distribution::gauss ? "gauss" : "uniform"; }
+
+}  // namespace dpdrng::rng

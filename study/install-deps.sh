@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Installs the Debian packages dpdrng needs, only if some are missing (we run as root on a fresh machine).
+set -euo pipefail
+pkgs=(build-essential cmake libgsl-dev libeigen3-dev libhdf5-dev hdf5-tools libgtest-dev libgmock-dev
+      libbenchmark-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev librandom123-dev libgmp-dev libmpfr-dev
+      gnuplot-nox)
+missing=()
+for p in "${pkgs[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+((${#missing[@]} == 0)) && exit 0
+echo "installing: ${missing[*]}" >&2
+SUDO=""
+[[ $(id -u) -eq 0 ]] || SUDO=sudo
+$SUDO apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
