@@ -74,8 +74,11 @@ const bool registered = register_command(10, [](CLI::App& root) {
       "raw = little-endian 64-bit words (dieharder -g 200, PractRand stdin64).");
   args->gen.add_to(*sub);
   sub->add_option("--seeding", args->seeding, "only 'counter' makes a standalone stream")->capture_default_str();
-  sub->add_option("--start", args->start, "first counter value (or seed for splitmix64/mt19937)")->capture_default_str();
-  sub->add_option("--count", args->count, "number of generator calls")->required();
+  // CLI11 reads "-1" into an unsigned as 2^64-1: a negative count would run (almost) forever.
+  sub->add_option("--start", args->start, "first counter value (or seed for splitmix64/mt19937)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  sub->add_option("--count", args->count, "number of generator calls")->check(CLI::NonNegativeNumber)->required();
   sub->add_option("--format", args->format, "hex (one 16-digit word a line) or raw")
       ->check(CLI::IsMember({"hex", "raw"}))
       ->capture_default_str();

@@ -12,6 +12,24 @@ namespace dpdrng::rng {
 // Fills out with consecutive output words of the stream that starts at `start`, beginning at word `offset`.
 void fill_stream(const GeneratorSpec& spec, std::uint64_t start, std::uint64_t offset, std::span<std::uint64_t> out);
 
+// Word-indexed like fill_stream, mapped to [0,1) by to_unit(): out[k] = to_unit(word offset + k).
+void fill_unit(const GeneratorSpec& spec, std::uint64_t start, std::uint64_t offset, std::span<double> out);
+
+// One number per generator call, the value PairNoise would give for that call's block:
+// out[k] = draw<dist>(stream(start, first_call + k)); mt19937's "call" is one next64() word.
+// uniform: bit-identical to the scalar draw. gauss: Box–Muller through simd::log_unit and simd::cos_2pi,
+// within a few ulp of the scalar box_muller() (which keeps libm's log and cos; tests state the bound).
+void fill_noise(const GeneratorSpec& spec, Distribution dist, std::uint64_t start, std::uint64_t first_call,
+                std::span<double> out);
+inline void fill_uniform(const GeneratorSpec& spec, std::uint64_t start, std::uint64_t first_call,
+                         std::span<double> out) {
+  fill_noise(spec, Distribution::uniform, start, first_call, out);
+}
+inline void fill_gauss(const GeneratorSpec& spec, std::uint64_t start, std::uint64_t first_call,
+                       std::span<double> out) {
+  fill_noise(spec, Distribution::gauss, start, first_call, out);
+}
+
 // Output words per call (tea64, philox4x32, threefry2x64 give two; the others one).
 int words_per_call(const GeneratorSpec& spec);
 

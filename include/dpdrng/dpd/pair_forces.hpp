@@ -1,0 +1,71 @@
+#pragma once
+// The DPD pair forces of one step behind a run-time interface (one virtual call per step), with the noise
+// policy a compile-time parameter inside (pair_loop.hpp), so the hash inlines into the pair loop.
+//
+// Determinism: rows (bead i and its partners j > i) run in parallel, but each writes only its own slots; the
+// reactions −F_ij are then added to the partners serially in row order, and the virial sums run over per-row
+// partial sums in row order. No floating-point sum depends on the thread count.
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "dpdrng/dpd/config.hpp"
+#include "dpdrng/dpd/kernel.hpp"
+#include "dpdrng/dpd/system.hpp"
+
+namespace dpdrng::dpd {
+
+struct ForceSums {
+  std::array<double, 3> virial{};       // Σ_pairs (r_ij)_α (F_ij)_α, all three pair forces
+  std::array<double, 3> virial_cons{};  // the same for the conservative force alone
+  double min_r2 = 0;                    // closest pair seen (inside r_c; r_c² if none)
+  std::uint64_t in_range = 0;           // pairs inside r_c
+  std::uint64_t numbers = 0;            // generator calls this step
+};
+
+// Raw generator output of one force-evaluation step; words[1] is used by two-word generators (tea64's b).
+struct RawTap {
+  std::int64_t step = 0;
+  int words_per_pair = 1;
+  std::array<std::vector<std::uint64_t>, 2> words;
+};
+
+// What one pair received on every production step: raw words (tea64: a and b apart) and ζ.
+struct PairSeries {
+  std::uint32_t i = 0, j = 0;
+  int words_per_pair = 1;
+  std::vector<std::int64_t> steps;
+  std::array<std::vector<std::uint64_t>, 2> words;
+  std::vector<double> zeta;
+};
+
+struct Taps {
+  std::vector<RawTap> raw;
+  std::vector<PairSeries> series;
+};
+
+// Velocities used by the dissipative force (Groot–Warren's predicted ṽ).
+struct VelocityView {
+  const double *vx, *vy, *vz;
+};
+
+class PairForces {
+ public:
+  virtual ~PairForces() = default;
+  // Overwrites s.f with the pair forces at s.x and velocities v, for force-evaluation number `step`.
+  // tap_raw: keep this step's raw words; tap_series: append to the pair series.
+  virtual ForceSums compute(System& s, VelocityView v, std::uint64_t step, bool tap_raw, bool tap_series,
+                            Taps& taps) = 0;
+  // Calibration: nanoseconds per generator call + distribution, timed in a tight loop on this run's noise.
+  virtual double ns_per_number() const = 0;
+  virtual int words_per_pair() const = 0;
+  virtual std::uint64_t list_builds() const { return 0; }
+};
+
+// Chooses the noise policy (hash via rng::with_pair_noise, the mt19937 stream, or a benchmark baseline) and
+// the pair mode. The config must be valid.
+std::unique_ptr<PairForces> make_pair_forces(const WaterConfig& cfg, const DpdKernel& kernel, std::size_t n);
+
+}  // namespace dpdrng::dpd

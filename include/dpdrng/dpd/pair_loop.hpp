@@ -1,0 +1,277 @@
+#pragma once
+// The pair loop, templated on the noise policy (noise.hpp) so that the generator inlines. Each row i is done
+// in two passes over its partners j > i: geometry (separation, r², and in `all` mode the generator call for
+// every pair, as the paper does), then forces for the pairs inside r_c. The split keeps the first pass free
+// of branches so the compiler can vectorise the hash.
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "dpdrng/dpd/neighbours.hpp"
+#include "dpdrng/dpd/noise.hpp"
+#include "dpdrng/dpd/pair_forces.hpp"
+
+namespace dpdrng::dpd {
+
+// Slot of pair (i < j) in the lexicographic order of all N(N−1)/2 pairs.
+constexpr std::size_t pair_slot(std::size_t i, std::size_t j, std::size_t n) {
+  return i * n - i * (i + 1) / 2 + (j - i - 1);
+}
+
+// Separations d = r_j − r_i (minimum image) and r² for m consecutive partners; restrict lets it vectorise.
+inline void geometry(const double* __restrict x, const double* __restrict y, const double* __restrict z, double xi,
+                     double yi, double zi, const Box& box, std::size_t m, double* __restrict dx,
+                     double* __restrict dy, double* __restrict dz, double* __restrict r2) {
+  const double Lx = box.L[0], Ly = box.L[1], Lz = box.L[2];
+  const double hx = Lx / 2, hy = Ly / 2, hz = Lz / 2;
+  for (std::size_t t = 0; t < m; ++t) {
+    const double a = min_image(x[t] - xi, Lx, hx), b = min_image(y[t] - yi, Ly, hy), c = min_image(z[t] - zi, Lz, hz);
+    dx[t] = a, dy[t] = b, dz[t] = c;
+    r2[t] = a * a + b * b + c * c;
+  }
+}
+
+template <class Noise>
+class PairLoop final : public PairForces {
+ public:
+  PairLoop(Noise noise, const DpdKernel& kernel, PairMode mode, double skin, int threads, std::size_t n,
+           std::vector<std::pair<std::uint32_t, std::uint32_t>> tap_pairs)
+      : noise_(std::move(noise)), k_(kernel), mode_(mode), threads_(threads > 0 ? threads : omp_get_max_threads()),
+        tap_pairs_(std::move(tap_pairs)) {
+    list_.skin = skin;
+    rows_.resize(n);
+    scratch_.resize(threads_);
+    for (auto& sc : scratch_) sc.resize(n);
+  }
+
+  int words_per_pair() const override { return Noise::kWords; }
+  std::uint64_t list_builds() const override { return list_.builds(); }
+
+  ForceSums compute(System& s, VelocityView v, std::uint64_t step, bool tap_raw, bool tap_series,
+                    Taps& taps) override {
+    const std::size_t n = s.size();
+    const bool all = mode_ == PairMode::all;
+    if (!all && list_.stale(s)) list_.build(s, k_.rc, threads_);
+    const std::size_t slots = all ? n * (n - 1) / 2 : list_.entries();
+    if constexpr (Noise::kStream) noise_.begin_step(slots);
+    RawTap* tap = nullptr;
+    if (tap_raw && !Noise::kZero) {
+      tap = &taps.raw.emplace_back();
+      tap->step = static_cast<std::int64_t>(step);
+      tap->words_per_pair = Noise::kWords;
+      for (int w = 0; w < Noise::kWords; ++w) tap->words[w].assign(all ? slots : 0, 0);
+    }
+    const Ctx c{s, v, step, tap};
+#pragma omp parallel for num_threads(threads_) schedule(dynamic, 16)
+    for (std::size_t i = 0; i < n; ++i) {
+      Scratch& sc = scratch_[omp_get_thread_num()];
+      if (all)
+        row_all(c, static_cast<std::uint32_t>(i), sc);
+      else
+        row_list(c, static_cast<std::uint32_t>(i), sc);
+    }
+    ForceSums sums = reduce(s);
+    sums.numbers = Noise::kZero ? 0 : (all ? slots : sums.in_range);
+    if (tap && !all) gather_tap(*tap, n);
+    if (tap_series && !Noise::kZero) record_series(s, step, taps);
+    return sums;
+  }
+
+  double ns_per_number() const override {
+    if constexpr (Noise::kZero) {
+      return 0.0;
+    } else {
+      constexpr int kCalls = 1 << 16;
+      Noise noise = noise_;
+      if constexpr (Noise::kStream) noise.begin_step(kCalls);
+      double best = std::numeric_limits<double>::infinity();
+      volatile double sink = 0;
+      for (int rep = 0; rep < 3; ++rep) {
+        double acc = 0;
+        const auto t0 = std::chrono::steady_clock::now();
+        for (int k = 0; k < kCalls; ++k) {
+          const double d = 0.5 - k * 1.52587890625e-05;
+          acc += noise.zeta(noise.raw(rng::PairInput{1, 2, d, 0.25 - d, 0.1, std::uint64_t(k)}, std::size_t(k)));
+        }
+        const auto t1 = std::chrono::steady_clock::now();
+        sink = sink + acc;
+        best = std::min(best, std::chrono::duration<double, std::nano>(t1 - t0).count() / kCalls);
+      }
+      return best;
+    }
+  }
+
+ private:
+  struct Rec {
+    std::uint32_t j;
+    double fx, fy, fz;
+  };
+  struct Row {
+    std::vector<Rec> rec;
+    std::vector<std::uint64_t> tap[2];  // cells mode: raw words of this row's pairs inside r_c
+    std::uint32_t count = 0;
+    double w[3] = {0, 0, 0}, wc[3] = {0, 0, 0};
+    double min_r2 = 0;
+  };
+  struct Scratch {
+    std::vector<double> dx, dy, dz, r2;
+    std::vector<std::uint32_t> j, slot;
+    std::vector<typename Noise::Block> blk;
+    void resize(std::size_t n) {
+      dx.resize(n), dy.resize(n), dz.resize(n), r2.resize(n), j.resize(n), slot.resize(n), blk.resize(n);
+    }
+  };
+  struct Ctx {
+    System& s;
+    VelocityView v;
+    std::uint64_t step;
+    RawTap* tap;
+  };
+
+  // Pass 2, shared by both modes: forces for the m in-range pairs held in sc (partners sc.j, blocks sc.blk).
+  void forces(const Ctx& c, std::uint32_t i, std::size_t m, Scratch& sc, Row& row) const {
+    const System& s = c.s;
+    const double vxi = c.v.vx[i], vyi = c.v.vy[i], vzi = c.v.vz[i];
+    const double* arow = &k_.a[std::size_t(s.type[i]) * k_.ntypes];
+    const double rc = k_.rc, gamma = k_.gamma, sig = k_.sigma * k_.inv_sqrt_dt;
+    double fx = 0, fy = 0, fz = 0, w0 = 0, w1 = 0, w2 = 0, c0 = 0, c1 = 0, c2 = 0;
+    double min_r2 = k_.rc2();
+    if (row.rec.size() < m) row.rec.resize(m);
+    for (std::size_t t = 0; t < m; ++t) {
+      const std::uint32_t j = sc.j[t];
+      const double dx = sc.dx[t], dy = sc.dy[t], dz = sc.dz[t], r2 = sc.r2[t];
+      const double zeta = noise_.zeta(sc.blk[t]);
+      const PairForce pf = DpdKernel::evaluate(r2, dx, dy, dz, c.v.vx[j] - vxi, c.v.vy[j] - vyi, c.v.vz[j] - vzi,
+                                               arow[s.type[j]], zeta, rc, gamma, sig);
+      const double gx = pf.s * dx, gy = pf.s * dy, gz = pf.s * dz;
+      fx += gx, fy += gy, fz += gz;
+      row.rec[t] = {j, gx, gy, gz};
+      // r_ij = −d and F_ij = s·d: (r_ij)_α (F_ij)_α = −s d_α²; conservative: a w d_α² / r.
+      w0 -= gx * dx, w1 -= gy * dy, w2 -= gz * dz;
+      const double cw = pf.a_w / r2;
+      c0 += cw * dx * dx, c1 += cw * dy * dy, c2 += cw * dz * dz;
+      min_r2 = std::min(min_r2, r2);
+    }
+    c.s.fx[i] = fx, c.s.fy[i] = fy, c.s.fz[i] = fz;
+    row.count = static_cast<std::uint32_t>(m);
+    row.w[0] = w0, row.w[1] = w1, row.w[2] = w2;
+    row.wc[0] = c0, row.wc[1] = c1, row.wc[2] = c2;
+    row.min_r2 = min_r2;
+  }
+
+  void row_all(const Ctx& c, std::uint32_t i, Scratch& sc) {
+    const System& s = c.s;
+    const std::size_t n = s.size();
+    const std::size_t m = n - i - 1, base = pair_slot(i, i + 1, n);
+    geometry(s.x.data() + i + 1, s.y.data() + i + 1, s.z.data() + i + 1, s.x[i], s.y[i], s.z[i], s.box, m,
+             sc.dx.data(), sc.dy.data(), sc.dz.data(), sc.r2.data());
+    double* dxs = sc.dx.data();
+    double* dys = sc.dy.data();
+    double* dzs = sc.dz.data();
+    double* r2s = sc.r2.data();
+    auto* blk = sc.blk.data();
+    if constexpr (!Noise::kZero)
+      for (std::size_t t = 0; t < m; ++t)
+        blk[t] = noise_.raw(rng::PairInput{i, std::uint32_t(i + 1 + t), dxs[t], dys[t], dzs[t], c.step}, base + t);
+    if (c.tap)
+      for (int w = 0; w < Noise::kWords; ++w)
+        for (std::size_t t = 0; t < m; ++t) c.tap->words[w][base + t] = blk[t][w];
+    // Compact the pairs inside r_c in place (t' ≤ t), keeping their order.
+    const double rc2 = k_.rc2();
+    std::size_t k = 0;
+    for (std::size_t t = 0; t < m; ++t) {
+      if (!(r2s[t] < rc2)) continue;
+      sc.j[k] = std::uint32_t(i + 1 + t);
+      dxs[k] = dxs[t], dys[k] = dys[t], dzs[k] = dzs[t], r2s[k] = r2s[t], blk[k] = blk[t];
+      ++k;
+    }
+    forces(c, i, k, sc, rows_[i]);
+  }
+
+  void row_list(const Ctx& c, std::uint32_t i, Scratch& sc) {
+    const System& s = c.s;
+    const double Lx = s.box.L[0], Ly = s.box.L[1], Lz = s.box.L[2];
+    const double hx = Lx / 2, hy = Ly / 2, hz = Lz / 2;
+    const double xi = s.x[i], yi = s.y[i], zi = s.z[i];
+    const double rc2 = k_.rc2();
+    const std::uint32_t* js = list_.j();
+    std::size_t k = 0;
+    for (std::uint32_t e = list_.begin(i); e < list_.end(i); ++e) {
+      const std::uint32_t j = js[e];
+      const double dx = min_image(s.x[j] - xi, Lx, hx), dy = min_image(s.y[j] - yi, Ly, hy),
+                   dz = min_image(s.z[j] - zi, Lz, hz);
+      const double r2 = dx * dx + dy * dy + dz * dz;
+      sc.j[k] = j, sc.slot[k] = e;
+      sc.dx[k] = dx, sc.dy[k] = dy, sc.dz[k] = dz, sc.r2[k] = r2;
+      k += r2 < rc2 ? 1 : 0;  // branch-free compaction: the slot is overwritten unless the pair is in range
+    }
+    if constexpr (!Noise::kZero)
+      for (std::size_t t = 0; t < k; ++t)
+        sc.blk[t] = noise_.raw(rng::PairInput{i, sc.j[t], sc.dx[t], sc.dy[t], sc.dz[t], c.step}, sc.slot[t]);
+    Row& row = rows_[i];
+    if (c.tap)
+      for (int w = 0; w < Noise::kWords; ++w) {
+        row.tap[w].resize(k);
+        for (std::size_t t = 0; t < k; ++t) row.tap[w][t] = sc.blk[t][w];
+      }
+    forces(c, i, k, sc, row);
+  }
+
+  ForceSums reduce(System& s) const {
+    ForceSums sums;
+    sums.min_r2 = k_.rc2();
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      const Row& row = rows_[i];
+      for (std::uint32_t t = 0; t < row.count; ++t) {
+        const Rec& r = row.rec[t];
+        s.fx[r.j] -= r.fx, s.fy[r.j] -= r.fy, s.fz[r.j] -= r.fz;
+      }
+      for (int a = 0; a < 3; ++a) sums.virial[a] += row.w[a], sums.virial_cons[a] += row.wc[a];
+      sums.min_r2 = std::min(sums.min_r2, row.min_r2);
+      sums.in_range += row.count;
+    }
+    return sums;
+  }
+
+  void gather_tap(RawTap& tap, std::size_t n) const {
+    for (std::size_t i = 0; i < n; ++i)
+      for (int w = 0; w < Noise::kWords; ++w)
+        tap.words[w].insert(tap.words[w].end(), rows_[i].tap[w].begin(), rows_[i].tap[w].begin() + rows_[i].count);
+  }
+
+  // Hashes are pure functions of the pair input, so a tapped pair's block is recomputed here from the same
+  // separation the loop used; the stream reference reads the pair's slot (all mode only, checked by validate).
+  void record_series(const System& s, std::uint64_t step, Taps& taps) const {
+    const double Lx = s.box.L[0], Ly = s.box.L[1], Lz = s.box.L[2];
+    if (taps.series.size() != tap_pairs_.size()) {
+      taps.series.resize(tap_pairs_.size());
+      for (std::size_t q = 0; q < tap_pairs_.size(); ++q) {
+        taps.series[q].i = tap_pairs_[q].first, taps.series[q].j = tap_pairs_[q].second;
+        taps.series[q].words_per_pair = Noise::kWords;
+      }
+    }
+    for (auto& ser : taps.series) {
+      const std::uint32_t i = ser.i, j = ser.j;
+      const double dx = min_image(s.x[j] - s.x[i], Lx, Lx / 2), dy = min_image(s.y[j] - s.y[i], Ly, Ly / 2),
+                   dz = min_image(s.z[j] - s.z[i], Lz, Lz / 2);
+      const auto blk = noise_.raw(rng::PairInput{i, j, dx, dy, dz, step}, pair_slot(i, j, s.size()));
+      ser.steps.push_back(static_cast<std::int64_t>(step));
+      for (int w = 0; w < Noise::kWords; ++w) ser.words[w].push_back(blk[w]);
+      ser.zeta.push_back(noise_.zeta(blk));
+    }
+  }
+
+  Noise noise_;
+  DpdKernel k_;
+  PairMode mode_;
+  int threads_;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> tap_pairs_;
+  VerletList list_;
+  std::vector<Row> rows_;
+  std::vector<Scratch> scratch_;
+};
+
+}  // namespace dpdrng::dpd

@@ -1,0 +1,87 @@
+#pragma once
+// What a DPD run returns: status, observables (means with spread and block-average standard errors),
+// distributions, timings and the taps for the statistical tests. A run that blows up is data, not a crash:
+// status says "unstable at step k: reason" and the observables cover the steps done.
+#include <array>
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "dpdrng/dpd/pair_forces.hpp"
+
+namespace dpdrng::dpd {
+
+struct Stat {
+  double mean = 0, std = 0;
+  double sem = 0;  // standard error of the mean from 20 block averages (correlated samples)
+  std::size_t n = 0;
+};
+Stat make_stat(const std::vector<double>& samples);
+
+// Velocity components pooled over x, y, z and sampled production steps, against Maxwell–Boltzmann.
+struct VelocityPdf {
+  std::vector<double> v;                       // bin centres
+  std::array<std::vector<double>, 3> pdf;      // measured density per component
+  std::vector<double> mb_kT, mb_measured;      // bin-averaged MB density at k_BT and at the measured T
+  // Mean over bins with MB probability mass ≥ 1e-3 of |P − P_th| / P_th (the paper's error rate), per
+  // component and pooled; tails are left out because their relative error is counting noise.
+  std::array<double, 3> error_rate_kT{}, error_rate_measured{};
+  double error_rate_kT_mean = 0, error_rate_measured_mean = 0;
+  std::size_t samples = 0;                     // velocity components counted per component
+};
+
+struct Msd {
+  std::vector<double> tau, msd;  // msd(τ) averaged over particles and time origins
+  double fit_from = 0, fit_to = 0;
+  double diffusion = 0;          // slope / 6 of a least-squares line over [fit_from, fit_to]
+  double diffusion_sem = 0;      // from the slopes of 4 independent quarters of the origins
+};
+
+struct Rdf {
+  std::vector<double> r, g;
+  std::size_t samples = 0;
+};
+
+struct Timings {
+  double total_s = 0, force_s = 0, per_step_s = 0;
+  double particle_steps_per_s = 0;
+  std::uint64_t random_numbers = 0;
+  double ns_per_number = 0;       // calibration of generator + distribution in a tight loop
+  double rng_share_estimate = 0;  // random_numbers × ns_per_number / force time (bench measures it by difference)
+  std::uint64_t list_builds = 0;
+  int threads = 1;
+};
+
+struct Series {
+  std::vector<std::int64_t> step;
+  std::vector<double> temperature, pressure, pressure_conservative;
+  std::vector<double> px, py, pz;  // total momentum
+};
+
+struct RunResult {
+  std::string status = "ok";
+  bool ok() const { return status == "ok"; }
+  std::int64_t steps_done = 0;
+  std::string generator, seeding, distribution, pairs;
+  std::size_t particles = 0;
+  double box_length = 0;
+
+  Stat temperature;                            // k_BT from Σv²/(3N−3)
+  Stat pressure, pressure_conservative;        // ρk_BT_kin + W/(3V)
+  std::array<Stat, 3> pressure_diag, pressure_conservative_diag;
+  double momentum_drift = 0;                   // max over steps of |P(t) − P(0)|, per bead
+  std::array<double, 3> momentum_final{};
+
+  VelocityPdf velocity_pdf;
+  Msd msd;
+  Rdf rdf;
+  Series series;
+  Taps taps;
+  Timings timings;
+};
+
+// Scalars only unless `arrays` (then also pdf, msd, g(r), series; taps never: they are for the tests).
+nlohmann::json to_json(const RunResult& r, bool arrays);
+
+}  // namespace dpdrng::dpd

@@ -1,0 +1,44 @@
+#pragma once
+// The particle state: structure-of-arrays so the pair loop streams, a periodic orthorhombic box (cubic for
+// water, but the bilayer scene will want Lz ≠ Lx), bead types for a_ij by type pair, and image counters so
+// that unwrapped positions (for the MSD) survive wrapping. Mass is 1 throughout.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace dpdrng::dpd {
+
+struct Box {
+  std::array<double, 3> L{1, 1, 1};
+  double volume() const { return L[0] * L[1] * L[2]; }
+};
+
+// Minimum image of one component, for |d| < 1.5 L (both positions wrapped into [0, L) give |d| < L).
+// A branch rather than round(): it vectorises, and it leaves d untouched (bit for bit) inside the box.
+inline double min_image(double d, double L, double half) {
+  if (d > half) return d - L;
+  if (d < -half) return d + L;
+  return d;
+}
+
+struct System {
+  Box box;
+  std::vector<double> x, y, z;     // wrapped into [0, L)
+  std::vector<double> vx, vy, vz;
+  std::vector<double> fx, fy, fz;
+  std::vector<std::int32_t> ix, iy, iz;  // periodic images crossed: unwrapped = x + ix·Lx
+  std::vector<std::uint8_t> type;        // index into the a_ij matrix
+
+  std::size_t size() const { return x.size(); }
+  void resize(std::size_t n);
+  // Wraps every position into [0, L) and counts the images crossed.
+  void wrap();
+  std::array<double, 3> momentum() const;
+  double kinetic_twice() const;  // Σ m v² (fixed summation order)
+};
+
+// Uniform random positions (soft DPD beads need no lattice) and Maxwell–Boltzmann velocities at kT with the
+// total momentum removed, all from one std::mt19937_64 seeded with `seed`: the same start for every generator.
+System make_fluid(std::size_t n, const Box& box, double kT, std::uint64_t seed);
+
+}  // namespace dpdrng::dpd

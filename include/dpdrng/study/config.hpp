@@ -1,0 +1,73 @@
+#pragma once
+// A study configuration: what to sweep (generators × rounds × distributions × seedings × Δt × replicas), the
+// scene, and the sizes of the tests. Parsed from TOML and validated completely before anything is written:
+// an unknown key, a NaN or an out-of-range value is an InputError that names the key.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace dpdrng::study {
+
+struct GeneratorEntry {
+  std::string name;
+  std::vector<int> rounds;             // empty in TOML → the generator's default round count
+  std::vector<std::string> seedings;   // empty → the study's seedings
+};
+
+struct SceneParams {
+  std::string name = "water";
+  int particles = 256;
+  double density = 3.0;
+  double a = 25.0;
+  double gamma = 6.75;
+  double kT = 1.0;
+  double lambda = 0.5;
+  std::vector<double> dt{0.04};  // more than one value makes Δt a sweep dimension
+  long steps = 10000;
+  long equilibrate = 500;
+  std::string pairs = "all";
+};
+
+struct TestParams {
+  double alpha = 0.01;
+  long chi2_steps = 0;        // production steps sampled for the χ² pass fraction; 0 = every one
+  long ttest_pairs = 100;     // pairs whose series get the lag-1 t-test
+  long nist_sequences = 1000;
+  long nist_bits = 1 << 20;
+  std::vector<std::string> nist_generators;  // generators whose cells also get the NIST battery
+  std::vector<std::string> nist_distributions{"gauss"};
+  int nist_replicas = 1;      // only the first nist_replicas replicas: the outputs are the generator's either way
+};
+
+struct CostParams {
+  long numbers = 1 << 22;  // words timed per generator for ns/number
+};
+
+struct StudyConfig {
+  std::string name;
+  std::string description;
+  std::string reference = "mt19937";
+  int replicas = 4;
+  std::uint64_t seed = 1;
+  std::vector<GeneratorEntry> generators;
+  std::vector<std::string> distributions{"gauss", "uniform"};
+  std::vector<std::string> seedings{"distance"};
+  SceneParams scene;
+  TestParams tests;
+  CostParams cost;
+
+  std::string source_text;  // the TOML as given
+  std::string hash;         // of the canonical form below, so comments and layout do not matter
+
+  nlohmann::json canonical() const;
+};
+
+// `origin` names the source in messages (a path, or "<string>").
+StudyConfig parse_config(const std::string& toml_text, const std::string& origin);
+StudyConfig load_config(const std::string& path);  // InputError if unreadable
+
+std::string fnv1a64_hex(const std::string& text);
+
+}  // namespace dpdrng::study

@@ -1,0 +1,47 @@
+#pragma once
+// The measurements of one cell, as small adapters over the engine (dpd::run_water) and the statistical tests
+// (stats::chi2_uniform, stats::lag1_ttest, stats::nist). Each adapter writes named scalars and series into
+// the CellResult; the names are what analysis.cpp and report.cpp read:
+//   physics  temperature_mean/_std/_sem, pressure_mean, pressure_conservative_mean, pressure_xx/yy/zz,
+//            diffusion_coefficient, vpdf_error_mb, momentum_drift; series temperature, vpdf/v, vpdf/p,
+//            vpdf/mb, msd/tau, msd/msd, rdf/r, rdf/g
+//   tests    chi2.<s>.trials/passed/fraction, ttest.<s>.…, with s = x (one word a call) or a, b (two words);
+//            series chi2/<s>/p, ttest/<s>/p; corr.pair.r/p, corr.time.r/p
+//   nist     nist/test, nist/variant (strings), nist/passed, nist/applicable, nist/p_uniformity (series),
+//            nist/histogram (rows × 10)
+//   cost     cost.ns_per_number, cost.step_seconds, cost.run_seconds, cost.rng_share, cost.numbers_per_step
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "dpdrng/dpd/config.hpp"
+#include "dpdrng/dpd/result.hpp"
+#include "dpdrng/study/cell_result.hpp"
+#include "dpdrng/study/config.hpp"
+
+namespace dpdrng::study {
+
+// Which steps and pairs the engine must tap for this cell's tests.
+struct TapPlan {
+  std::vector<std::int64_t> chi2_steps;  // evenly spread over the production steps
+  std::vector<std::int64_t> nist_steps;  // consecutive, at the end of the run: enough words for the battery
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;  // in couples of neighbouring pair ids
+};
+TapPlan plan_taps(const Cell& cell, const StudyConfig& config, int words_per_pair);
+
+dpd::WaterConfig engine_config(const Cell& cell, const StudyConfig& config, int threads, const TapPlan& plan);
+
+// Observables and costs of a finished (or blown-up) run.
+void record_run(const dpd::RunResult& run, CellResult& out);
+// χ² over the tapped steps (one test per step and output word), lag-1 t over the tapped pairs, and the
+// cross-pair / across-time correlations of ζ.
+void record_chi2(const dpd::Taps& taps, const TapPlan& plan, const TestParams& tests, CellResult& out);
+void record_ttest(const dpd::Taps& taps, const TestParams& tests, CellResult& out);
+void record_correlations(const dpd::Taps& taps, const TestParams& tests, CellResult& out);
+// The NIST battery on the bits of the tapped NIST steps, with the second-level counts.
+void record_nist(const dpd::Taps& taps, const TapPlan& plan, const TestParams& tests, int threads, CellResult& out);
+
+// All of the above: the study's production MeasureFn.
+CellResult measure_cell(const Cell& cell, const StudyConfig& config, int threads);
+
+}  // namespace dpdrng::study

@@ -1,0 +1,34 @@
+#pragma once
+// Runs the cells of a study (or of one shard) that the store does not hold yet, in parallel across cells,
+// saving each as soon as it finishes. The measurement is passed in, so tests can count and fake it.
+#include <functional>
+#include <iosfwd>
+
+#include "dpdrng/study/cell_result.hpp"
+#include "dpdrng/study/config.hpp"
+#include "dpdrng/study/store.hpp"
+#include "dpdrng/study/sweep.hpp"
+
+namespace dpdrng::study {
+
+// `threads` is the thread budget this cell may use inside (1 when cells run side by side).
+using MeasureFn = std::function<CellResult(const Cell&, const StudyConfig&, int threads)>;
+
+struct RunOptions {
+  Shard shard{};
+  int threads = 1;                    // cells run concurrently, one thread each
+  std::ostream* progress = nullptr;   // cells done/total and ETA; nullptr = silent
+};
+
+struct RunSummary {
+  std::size_t cells = 0;      // in this shard
+  std::size_t resumed = 0;    // already stored, not recomputed
+  std::size_t computed = 0;
+  std::size_t unstable = 0;
+  std::size_t failed = 0;
+  double seconds = 0;
+};
+
+RunSummary run_study(const StudyConfig& config, Store& store, const RunOptions& options, const MeasureFn& measure);
+
+}  // namespace dpdrng::study

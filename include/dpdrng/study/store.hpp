@@ -1,0 +1,49 @@
+#pragma once
+// The results directory of one study:
+//   DIR/study.toml        the config as given (its canonical hash in DIR/config.hash)
+//   DIR/cells/<id>.h5     one small file per finished cell, written to a temporary name and renamed, so a
+//                         killed run leaves either a whole cell or none
+//   DIR/study.h5          all cells in one file (/cells/<id>), assembled from cells/ by run, merge and report
+// A store made with one config refuses cells of another: resuming with an edited config would mix results.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "dpdrng/study/cell_result.hpp"
+#include "dpdrng/study/config.hpp"
+
+namespace dpdrng::study {
+
+class Store {
+ public:
+  explicit Store(std::filesystem::path dir) : dir_(std::move(dir)) {}
+
+  // Creates the directory for `config`, or checks that an existing one was made with the same config.
+  void open_for(const StudyConfig& config);
+  // Reads the config stored in the directory (for merge and report).
+  StudyConfig stored_config() const;
+
+  bool has(const Cell& cell) const;  // a complete, readable record exists
+  void save(const CellResult& result);
+  CellResult load(const Cell& cell) const;
+  std::vector<CellResult> load_all() const;  // every readable cell file, in id order
+
+  // Writes study.h5 atomically from the cell files present; returns the number of cells in it.
+  std::size_t assemble(const StudyConfig& config) const;
+
+  // Copies the cells of `other` that this store lacks; both must hold the same config.
+  std::size_t merge_from(const Store& other);
+
+  const std::filesystem::path& dir() const { return dir_; }
+  std::filesystem::path cell_path(const Cell& cell) const;
+  std::filesystem::path study_file() const { return dir_ / "study.h5"; }
+
+ private:
+  std::string stored_hash() const;
+  std::filesystem::path dir_;
+};
+
+// Writes `text` to `path` through a temporary file and a rename.
+void write_file_atomically(const std::filesystem::path& path, const std::string& text);
+
+}  // namespace dpdrng::study

@@ -1,0 +1,37 @@
+#pragma once
+// The sweep: a study expands into independent cells, one DPD run (plus its tests) each. The order is
+// deterministic, so `--shard k/N` picks the same subset on every machine and a merge of all shards equals
+// a single run.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "dpdrng/study/config.hpp"
+
+namespace dpdrng::study {
+
+struct Cell {
+  std::string generator;
+  int rounds = 1;
+  std::string distribution;
+  std::string seeding;  // "stream" for the reference
+  double dt = 0.04;
+  int replica = 0;
+  bool reference = false;
+  bool nist = false;  // this cell also feeds its outputs to the NIST battery
+  std::uint64_t seed = 0;  // shared by all cells of one replica: paired comparisons start from the same state
+
+  std::string id() const;     // e.g. "tea32-r01-gauss-distance-dt0.04-rep00", a valid file and group name
+  std::string label() const;  // e.g. "tea32(1)"
+};
+
+std::vector<Cell> enumerate_cells(const StudyConfig& config);
+
+struct Shard {
+  int index = 1, count = 1;  // 1-based, as Slurm's --array=1-N gives SLURM_ARRAY_TASK_ID
+};
+Shard parse_shard(const std::string& text);  // "k/N"; InputError otherwise
+// Round-robin over the canonical order, so every shard gets a mix of cheap and expensive cells.
+std::vector<Cell> select_shard(const std::vector<Cell>& cells, Shard shard);
+
+}  // namespace dpdrng::study

@@ -1,0 +1,144 @@
+// dpdrng simulate-bilayer: issue 7's membrane scene (an H3(T6)2 bilayer in water) with human or JSON output.
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "bilayer_cli.hpp"
+#include "dpdrng/cli/options.hpp"
+#include "dpdrng/cli/registry.hpp"
+#include "dpdrng/common/error.hpp"
+
+namespace dpdrng::cli {
+namespace {
+
+template <class T>
+void write_columns(const std::filesystem::path& path, const std::vector<std::string>& head,
+                   const std::vector<const std::vector<T>*>& cols) {
+  std::ofstream out(path);
+  if (!out) throw InputError("cannot write " + path.string());
+  for (std::size_t c = 0; c < head.size(); ++c) out << (c ? "," : "") << head[c];
+  out << "\n" << std::setprecision(10);
+  const std::size_t rows = cols.empty() ? 0 : cols[0]->size();
+  for (std::size_t r = 0; r < rows; ++r) {
+    for (std::size_t c = 0; c < cols.size(); ++c) out << (c ? "," : "") << (*cols[c])[r];
+    out << "\n";
+  }
+  if (!out) throw std::runtime_error("write failed: " + path.string());
+}
+
+void write_series(const std::filesystem::path& dir, const dpd::BilayerResult& r) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw InputError("cannot create " + dir.string() + ": " + ec.message());
+  const auto& p = r.profile;
+  write_columns<double>(dir / "profile.csv", {"z", "head", "tail", "water"}, {&p.z, &p.head, &p.tail, &p.water});
+  const auto& s = r.series;
+  std::vector<double> step(s.step.begin(), s.step.end()), out(s.lipids_out.begin(), s.lipids_out.end());
+  write_columns<double>(dir / "series.csv", {"step", "temperature", "pxx", "pyy", "pzz", "tension", "tail_order", "lipids_out"},
+                        {&step, &s.temperature, &s.pxx, &s.pyy, &s.pzz, &s.tension, &s.tail_order, &out});
+  std::vector<double> bond;
+  for (std::size_t k = 0; k < r.order_by_bond.size(); ++k) bond.push_back(double(k + 1));
+  write_columns<double>(dir / "order.csv", {"tail_bond", "p2"}, {&bond, &r.order_by_bond});
+}
+
+std::string pm(const dpd::Stat& s) {
+  std::ostringstream o;
+  o << std::setprecision(6) << s.mean << " ± " << std::setprecision(2) << s.sem;
+  return o.str();
+}
+
+void print_human(const dpd::BilayerResult& r) {
+  std::cout << "scene bilayer: " << r.lipids << " H3(T6)2 lipids, " << r.particles << " beads, box " << r.box[0]
+            << " x " << r.box[1] << " x " << r.box[2] << ", pairs " << r.pairs << ", " << r.generator << " / "
+            << r.seeding << " / " << r.distribution << "\n"
+            << "status                 " << r.status << " (" << r.steps_done << " steps)\n"
+            << "temperature k_BT       " << pm(r.temperature) << "\n"
+            << "pressure xx, yy, zz    " << pm(r.pressure_diag[0]) << ", " << pm(r.pressure_diag[1]) << ", "
+            << pm(r.pressure_diag[2]) << "\n"
+            << "tension Lz[Pzz-(Pxx+Pyy)/2] " << pm(r.tension) << " (conservative virial only: "
+            << pm(r.tension_conservative) << ")\n"
+            << "  without bond virial  " << pm(r.tension_without_bond_virial) << "\n"
+            << "  without bend virial  " << pm(r.tension_without_bend_virial) << "\n"
+            << "thickness (H peaks)    " << pm(r.thickness) << "   head separation " << pm(r.head_separation) << "\n"
+            << "tail order P2          " << pm(r.tail_order) << "\n"
+            << "lipids out (max)       " << r.lipids_out_max << "\n"
+            << "momentum drift / bead  " << r.momentum_drift << "\n"
+            << "time                   " << r.timings.total_s << " s (" << 1e3 * r.timings.per_step_s
+            << " ms/step, bonded " << r.bonded_s << " s), " << r.timings.threads << " thread(s)\n"
+            << "random numbers         " << r.timings.random_numbers << ", " << r.timings.ns_per_number
+            << " ns each (estimated share of force time " << 100 * r.timings.rng_share_estimate << " %)\n";
+}
+
+struct BilayerArgs {
+  dpd::BilayerConfig cfg;
+  GeneratorOptions gen;
+  std::string pairs = "cells", seeding = "distance", distribution = "gauss";
+  bool json = false, quiet = false;
+  std::string series_dir;
+};
+
+const bool registered = register_command(41, [](CLI::App& root) {
+  auto a = std::make_shared<BilayerArgs>();
+  CLI::App* sub = root.add_subcommand("simulate-bilayer", "run the membrane scene (H3(T6)2 bilayer, issue 7)");
+  sub->footer(
+      "Grafmueller et al. (2009) lipids: 146 H3(T6)2 in a 10 x 10 x 18 box with water, 5400 beads, gamma 4.5,\n"
+      "a_ij HH 30 HT 35 HW 30 TT 10 TW 75 WW 25, bonds 128/0.5, bending 15. dt_warmup for the first --warmup\n"
+      "steps, then --dt. Tension = Lz[Pzz - (Pxx+Pyy)/2] (positive = stretched). --series DIR writes\n"
+      "profile.csv (H/T/W densities vs z - z_mid), series.csv and order.csv.");
+  auto& c = a->cfg;
+  sub->add_option("--steps", c.steps, "steps in all (warm-up included)")->capture_default_str();
+  sub->add_option("--equilibrate", c.equilibrate, "steps not sampled (warm-up included)")->capture_default_str();
+  sub->add_option("--warmup", c.warmup, "first steps at --dt-warmup")->capture_default_str();
+  sub->add_option("--dt", c.dt, "time step after the warm-up")->capture_default_str();
+  sub->add_option("--dt-warmup", c.dt_warmup, "time step of the warm-up")->capture_default_str();
+  sub->add_option("--lambda", c.lambda, "Groot-Warren lambda")->capture_default_str();
+  sub->add_option("--gamma", c.gamma, "dissipative strength (sigma^2 = 2 gamma kT)")->capture_default_str();
+  sub->add_option("--kT", c.kT, "temperature k_BT")->capture_default_str();
+  sub->add_option("--pairs", a->pairs, "cells (Verlet lists) or all")
+      ->check(CLI::IsMember({"all", "cells"}))
+      ->capture_default_str();
+  sub->add_option("--skin", c.skin, "Verlet skin (cells)")->capture_default_str();
+  a->gen.add_to(*sub);
+  sub->add_option("--seeding", a->seeding, "distance (the paper) or pair-step")->capture_default_str();
+  sub->add_option("--distribution", a->distribution, "gauss (Box-Muller) or uniform (sqrt3(2u-1))")
+      ->capture_default_str();
+  sub->add_option("--seed", c.seed, "noise seed (pair-step key, mt19937 seed)")->capture_default_str();
+  sub->add_option("--init-seed", c.init_seed, "seed of the initial configuration")->capture_default_str();
+  sub->add_option("--threads", c.threads, "OpenMP threads (0 = default)")->capture_default_str();
+  sub->add_option("--sample-every", c.sample_every, "sampling interval of profiles and order")->capture_default_str();
+  sub->add_flag("--json", a->json, "machine-readable output");
+  sub->add_flag("--quiet,-q", a->quiet, "no progress on stderr");
+  sub->add_option("--series", a->series_dir, "directory for profiles and time series (CSV)");
+  sub->callback([a] {
+    dpd::BilayerConfig cfg = a->cfg;
+    cfg.generator = a->gen.spec();
+    cfg.pairs = dpd::parse_pair_mode(a->pairs);
+    cfg.seeding = rng::parse_seeding(a->seeding);
+    cfg.distribution = rng::parse_distribution(a->distribution);
+    run_bilayer_scene(cfg, a->json, a->quiet, a->series_dir);
+  });
+});
+
+}  // namespace
+
+void run_bilayer_scene(const dpd::BilayerConfig& in, bool json, bool quiet, const std::string& series_dir) {
+  dpd::BilayerConfig cfg = in;
+  cfg.series = !series_dir.empty();
+  dpd::RunHooks hooks;
+  if (!quiet && cfg.steps >= 2000)
+    hooks.progress = [](std::int64_t step, std::int64_t steps) {
+      std::cerr << "\rstep " << step << " / " << steps << std::flush;
+      if (step == steps) std::cerr << "\n";
+    };
+  const dpd::BilayerResult r = dpd::run_bilayer(cfg, hooks);
+  if (!series_dir.empty()) write_series(series_dir, r);
+  if (json)
+    std::cout << dpd::to_json(r, false).dump(2) << "\n";
+  else
+    print_human(r);
+}
+
+}  // namespace dpdrng::cli

@@ -1,0 +1,139 @@
+// dpdrng nist: the whole SP800-22 battery (sts-2.1.2's defaults) on one or many streams of a bit file.
+#include <iostream>
+#include <memory>
+
+#include "cmd_nist_common.hpp"
+#include "dpdrng/cli/registry.hpp"
+#include "dpdrng/common/error.hpp"
+#include "dpdrng/stats/nist/report.hpp"
+
+namespace dpdrng::cli {
+
+namespace nist = stats::nist;
+
+void NistInput::add_to(CLI::App& app) {
+  app.add_option("--input,-i", input, "bit file, or - for standard input");
+  app.add_option("--format", format, "ascii ('0'/'1', everything else skipped) or raw (bytes, MSB first)")
+      ->check(CLI::IsMember({"ascii", "raw"}))
+      ->capture_default_str();
+  app.add_option("--streams", streams, "number of streams K (default: one stream of all the input)");
+  app.add_option("--stream-bits", stream_bits, "bits per stream N (needed with --streams)");
+  app.add_option("--alpha", alpha, "significance level")->capture_default_str();
+  app.add_flag("--tsv", tsv, "one line per P-value: stream, test, variant, p");
+  app.add_flag("--json", json, "machine-readable output");
+}
+
+std::vector<nist::BitSequence> NistInput::load() const {
+  if (input.empty()) throw InputError("--input is required (a file, or - for standard input)");
+  if (!(alpha > 0 && alpha < 1)) throw InputError("--alpha must be within (0, 1)");
+  if (tsv && json) throw InputError("choose one of --tsv and --json");
+  if ((streams == 0) != (stream_bits == 0)) throw InputError("--streams and --stream-bits go together");
+  const nist::BitFormat f = nist::parse_bit_format(format);
+  if (streams == 0) {
+    nist::BitSequence all = nist::read_bits(input, f);
+    if (all.empty()) throw InputError("no bits in the input");
+    return {std::move(all)};
+  }
+  return nist::split_streams(nist::read_bits(input, f, streams * stream_bits), streams, stream_bits);
+}
+
+void print_nist(const NistInput& in, const std::vector<std::vector<nist::TestResult>>& results,
+                const nlohmann::json& parameters) {
+  const auto rows = nist::assess(results, in.alpha);
+  if (in.tsv) {
+    std::cout << nist::tsv_lines(results);
+    return;
+  }
+  if (in.json) {
+    nlohmann::json j;
+    j["source"] = in.source();
+    j["format"] = in.format;
+    j["streams"] = results.size();
+    j["stream_bits"] = results.empty() || results[0].empty() ? 0 : results[0][0].n;
+    j["alpha"] = in.alpha;
+    j["parameters"] = parameters;
+    nlohmann::json seqs = nlohmann::json::array();
+    for (const auto& r : results) {
+      nlohmann::json one = nlohmann::json::array();
+      for (const auto& t : r) one.push_back(nist::to_json(t));
+      seqs.push_back(one);
+    }
+    j["results"] = seqs;
+    nlohmann::json a = nlohmann::json::array();
+    for (const auto& row : rows) a.push_back(nist::to_json(row));
+    j["assessment"] = a;
+    std::cout << j.dump(1) << "\n";
+    return;
+  }
+  std::cout << nist::final_analysis_report(rows, in.source(), in.alpha);
+  // Say why a test has no P-values rather than leaving an empty row unexplained.
+  for (const auto& t : results.front())
+    if (!t.applicable) std::cout << "n/a " << nist::test_name(t.test) << " (stream 1): " << t.reason << "\n";
+}
+
+namespace {
+
+struct NistArgs {
+  NistInput in;
+  std::string tests;
+  nist::Parameters p;
+};
+
+std::vector<nist::Test> parse_tests(const std::string& list) {
+  std::vector<nist::Test> out;
+  if (list.empty()) return out;
+  std::size_t start = 0;
+  while (start <= list.size()) {
+    const std::size_t end = std::min(list.find(',', start), list.size());
+    const std::string name = list.substr(start, end - start);
+    const auto t = nist::parse_test(name);
+    if (!t) throw InputError("--tests: unknown test '" + name + "' (e.g. Frequency,Runs or frequency,runs)");
+    out.push_back(*t);
+    start = end + 1;
+  }
+  return out;
+}
+
+nlohmann::json parameters_json(const nist::Parameters& p) {
+  return {{"block_frequency_M", p.block_frequency_M}, {"non_overlapping_m", p.non_overlapping_m},
+          {"overlapping_m", p.overlapping_m},         {"universal_L", p.universal_L},
+          {"universal_Q", p.universal_Q},             {"approximate_entropy_m", p.approximate_entropy_m},
+          {"serial_m", p.serial_m},                   {"linear_complexity_M", p.linear_complexity_M}};
+}
+
+void run_nist(const NistArgs& a) {
+  const auto tests = parse_tests(a.tests);
+  const auto seqs = a.in.load();
+  const auto results = nist::run_battery(seqs, a.p, tests);
+  print_nist(a.in, results, parameters_json(a.p));
+}
+
+const bool registered = register_command(35, [](CLI::App& root) {
+  auto args = std::make_shared<NistArgs>();
+  CLI::App* sub = root.add_subcommand("nist", "NIST SP800-22 rev1a battery (sts-2.1.2 defaults), or one test of it");
+  sub->footer(
+      "Without a test subcommand, runs the whole battery (188 P-values a stream with the defaults) and prints\n"
+      "the reference's finalAnalysisReport. Streams: stream i = input bits [iN, (i+1)N).");
+  args->in.add_to(*sub);
+  sub->add_option("--tests", args->tests, "comma-separated subset, reference or subcommand names (default: all)");
+  sub->add_option("--block-frequency-M", args->p.block_frequency_M, "BlockFrequency block length")->capture_default_str();
+  sub->add_option("--non-overlapping-m", args->p.non_overlapping_m, "NonOverlappingTemplate template length")
+      ->capture_default_str();
+  sub->add_option("--overlapping-m", args->p.overlapping_m, "OverlappingTemplate template length")->capture_default_str();
+  sub->add_option("--universal-L", args->p.universal_L, "Universal block length (0: from n, as the reference)")
+      ->capture_default_str();
+  sub->add_option("--universal-Q", args->p.universal_Q, "Universal initialisation blocks (0: 10*2^L)")
+      ->capture_default_str();
+  sub->add_option("--approximate-entropy-m", args->p.approximate_entropy_m, "ApproximateEntropy block length")
+      ->capture_default_str();
+  sub->add_option("--serial-m", args->p.serial_m, "Serial block length")->capture_default_str();
+  sub->add_option("--linear-complexity-M", args->p.linear_complexity_M, "LinearComplexity block length")
+      ->capture_default_str();
+  sub->callback([args, sub] {
+    if (!sub->get_subcommands().empty()) return;  // a per-test subcommand ran instead
+    run_nist(*args);
+  });
+});
+
+}  // namespace
+}  // namespace dpdrng::cli

@@ -1,0 +1,73 @@
+#include "dpdrng/dpd/config.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "dpdrng/common/error.hpp"
+
+namespace dpdrng::dpd {
+
+PairMode parse_pair_mode(std::string_view name) {
+  if (name == "all") return PairMode::all;
+  if (name == "cells") return PairMode::cells;
+  throw InputError("unknown pair mode '" + std::string(name) + "' (known: all, cells)");
+}
+
+std::string_view to_string(PairMode m) { return m == PairMode::all ? "all" : "cells"; }
+
+double WaterConfig::box_length() const { return std::cbrt(particles / density); }
+
+namespace {
+[[noreturn]] void bad(const std::string& field, const std::string& why) {
+  throw InputError("invalid " + field + ": " + why);
+}
+// Written as !(v > 0) so that NaN fails too.
+void positive(double v, const char* field) {
+  if (!(v > 0) || !std::isfinite(v)) bad(field, std::to_string(v) + " (must be a positive finite number)");
+}
+void finite(double v, const char* field) {
+  if (!std::isfinite(v)) bad(field, "must be finite");
+}
+}  // namespace
+
+void WaterConfig::validate() const {
+  if (particles < 2 || particles > 50'000'000) bad("particles", std::to_string(particles) + " (2..5e7)");
+  positive(density, "density");
+  finite(a, "a");
+  positive(rc, "rc");
+  positive(kT, "kT");
+  finite(gamma, "gamma");
+  if (gamma < 0) bad("gamma", "must not be negative");
+  finite(lambda, "lambda");
+  if (lambda < 0 || lambda > 1) bad("lambda", std::to_string(lambda) + " (0..1)");
+  positive(dt, "dt");
+  if (steps < 1) bad("steps", std::to_string(steps) + " (at least 1)");
+  if (equilibrate < 0 || equilibrate >= steps)
+    bad("equilibrate", std::to_string(equilibrate) + " (0 <= equilibrate < steps = " + std::to_string(steps) + ")");
+  // Minimum image gives each pair once only if the box is wider than two cut-offs.
+  if (!(box_length() > 2 * rc))
+    bad("particles/density", "box length " + std::to_string(box_length()) + " must exceed 2*rc");
+  if (pairs == PairMode::cells) positive(skin, "skin");
+  rng::validated(generator);  // names the generator and its round range in the error
+  if (seeding == rng::Seeding::counter) bad("seeding", "'counter' makes streams; pair noise needs distance or pair-step");
+  if (threads < 0) bad("threads", "must not be negative");
+  if (sample_every < 1) bad("sample_every", "at least 1");
+  if (vpdf_bins < 1) bad("vpdf_bins", "at least 1");
+  positive(vpdf_range, "vpdf_range");
+  if (rdf_bins < 1) bad("rdf_bins", "at least 1");
+  positive(rdf_rmax, "rdf_rmax");
+  if (rdf_every < 0) bad("rdf_every", "must not be negative");
+  if (msd_every < 0) bad("msd_every", "must not be negative");
+  positive(max_temperature, "max_temperature");
+  finite(min_distance, "min_distance");
+  if (min_distance < 0) bad("min_distance", "must not be negative");
+  for (auto s : taps.raw_steps)
+    if (s < 0 || s > steps) bad("taps.raw_steps", std::to_string(s) + " outside 0..steps");
+  for (auto [i, j] : taps.pairs)
+    if (!(i < j) || j >= static_cast<std::uint32_t>(particles))
+      bad("taps.pairs", "(" + std::to_string(i) + ", " + std::to_string(j) + ") needs i < j < particles");
+  if (!taps.pairs.empty() && generator.name == "mt19937" && pairs == PairMode::cells)
+    bad("taps.pairs", "mt19937 gives a pair a number only while it is listed; tap pair series with pairs=all");
+}
+
+}  // namespace dpdrng::dpd

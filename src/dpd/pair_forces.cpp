@@ -1,0 +1,50 @@
+// The one place where the run-time noise choice becomes a compiled pair loop (hash families in their own files).
+#include <cmath>
+
+#include "pair_forces_make.hpp"
+
+namespace dpdrng::dpd {
+
+DpdKernel make_kernel(double a, double rc, double gamma, double kT, double dt) {
+  DpdKernel k;
+  k.rc = rc;
+  k.gamma = gamma;
+  k.sigma = std::sqrt(2.0 * gamma * kT);
+  k.inv_sqrt_dt = 1.0 / std::sqrt(dt);
+  k.ntypes = 1;
+  k.a = {a};
+  return k;
+}
+
+namespace {
+template <class Noise>
+std::unique_ptr<PairForces> loop(Noise noise, const WaterConfig& cfg, const DpdKernel& kernel, std::size_t n) {
+  return std::make_unique<PairLoop<Noise>>(std::move(noise), kernel, cfg.pairs, cfg.skin, cfg.threads, n,
+                                           cfg.taps.pairs);
+}
+
+template <rng::Distribution D>
+std::unique_ptr<PairForces> baseline_or_stream(const WaterConfig& cfg, const DpdKernel& kernel, std::size_t n) {
+  if (cfg.noise_override == NoiseOverride::none) return loop(ZeroNoise{}, cfg, kernel, n);
+  if (cfg.noise_override == NoiseOverride::unhashed) return loop(UnhashedNoise<D>{}, cfg, kernel, n);
+  return loop(StreamNoise<D>(cfg.seed), cfg, kernel, n);
+}
+}  // namespace
+
+std::unique_ptr<PairForces> make_pair_forces(const WaterConfig& in, const DpdKernel& kernel, std::size_t n) {
+  WaterConfig cfg = in;
+  cfg.generator = rng::validated(in.generator);
+  if (cfg.threads <= 0) cfg.threads = omp_get_max_threads();
+  const bool gauss = cfg.distribution == rng::Distribution::gauss;
+  if (cfg.noise_override != NoiseOverride::off || cfg.generator.name == "mt19937")
+    return gauss ? baseline_or_stream<rng::Distribution::gauss>(cfg, kernel, n)
+                 : baseline_or_stream<rng::Distribution::uniform>(cfg, kernel, n);
+  const std::string& g = cfg.generator.name;
+  if (g == "tea32") return detail::make_tea32(cfg, kernel, n);
+  if (g == "tea64") return detail::make_tea64(cfg, kernel, n);
+  if (g == "philox4x32" || g == "threefry2x64") return detail::make_random123(cfg, kernel, n);
+  if (g == "splitmix64") return detail::make_splitmix(cfg, kernel, n);
+  rng::throw_not_keyed_hash(g);
+}
+
+}  // namespace dpdrng::dpd

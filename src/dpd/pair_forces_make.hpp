@@ -1,0 +1,36 @@
+#pragma once
+// Internal to src/dpd: the pair-loop factory split by generator family, one translation unit each, because
+// each family instantiates the whole pair loop for every round count × seeding × distribution, and one file
+// holding all of them took minutes to compile. The round lists mirror rng::with_hash (registry.hpp).
+#include <memory>
+
+#include "dpdrng/dpd/pair_loop.hpp"
+#include "dpdrng/rng/registry.hpp"
+
+namespace dpdrng::dpd::detail {
+
+template <class G>
+std::unique_ptr<PairForces> make_for_generator(const G& gen, const WaterConfig& cfg, const DpdKernel& kernel,
+                                               std::size_t n) {
+  auto build = [&]<rng::Seeding S, rng::Distribution D>() -> std::unique_ptr<PairForces> {
+    HashNoise<rng::PairNoise<G, S, D>> noise{{gen, cfg.seed}};
+    return std::make_unique<PairLoop<decltype(noise)>>(noise, kernel, cfg.pairs, cfg.skin, cfg.threads, n,
+                                                       cfg.taps.pairs);
+  };
+  using rng::Distribution, rng::Seeding;
+  const bool gauss = cfg.distribution == Distribution::gauss;
+  if (cfg.seeding == Seeding::distance)
+    return gauss ? build.template operator()<Seeding::distance, Distribution::gauss>()
+                 : build.template operator()<Seeding::distance, Distribution::uniform>();
+  if (cfg.seeding == Seeding::pair_step)
+    return gauss ? build.template operator()<Seeding::pair_step, Distribution::gauss>()
+                 : build.template operator()<Seeding::pair_step, Distribution::uniform>();
+  rng::throw_counter_not_pair_seeding();
+}
+
+std::unique_ptr<PairForces> make_tea32(const WaterConfig& cfg, const DpdKernel& kernel, std::size_t n);
+std::unique_ptr<PairForces> make_tea64(const WaterConfig& cfg, const DpdKernel& kernel, std::size_t n);
+std::unique_ptr<PairForces> make_random123(const WaterConfig& cfg, const DpdKernel& kernel, std::size_t n);
+std::unique_ptr<PairForces> make_splitmix(const WaterConfig& cfg, const DpdKernel& kernel, std::size_t n);
+
+}  // namespace dpdrng::dpd::detail

@@ -1,0 +1,74 @@
+#include "dpdrng/dpd/system.hpp"
+
+#include <cmath>
+#include <random>
+
+namespace dpdrng::dpd {
+
+void System::resize(std::size_t n) {
+  for (auto* v : {&x, &y, &z, &vx, &vy, &vz, &fx, &fy, &fz}) v->assign(n, 0.0);
+  for (auto* v : {&ix, &iy, &iz}) v->assign(n, 0);
+  type.assign(n, 0);
+}
+
+namespace {
+// floor() rather than one conditional subtraction: a runaway bead may cross several images in one step.
+inline void wrap1(double& x, std::int32_t& img, double L) {
+  if (x >= 0 && x < L) return;
+  const double k = std::floor(x / L);
+  x -= k * L;
+  img += static_cast<std::int32_t>(k);
+  if (x >= L) x -= L, ++img;  // x = −tiny rounds to x + L == L
+  if (x < 0) x = 0;
+}
+}  // namespace
+
+void System::wrap() {
+  for (std::size_t i = 0; i < size(); ++i) {
+    wrap1(x[i], ix[i], box.L[0]);
+    wrap1(y[i], iy[i], box.L[1]);
+    wrap1(z[i], iz[i], box.L[2]);
+  }
+}
+
+std::array<double, 3> System::momentum() const {
+  std::array<double, 3> p{0, 0, 0};
+  for (std::size_t i = 0; i < size(); ++i) p[0] += vx[i], p[1] += vy[i], p[2] += vz[i];
+  return p;
+}
+
+double System::kinetic_twice() const {
+  double k = 0;
+  for (std::size_t i = 0; i < size(); ++i) k += vx[i] * vx[i] + vy[i] * vy[i] + vz[i] * vz[i];
+  return k;
+}
+
+System make_fluid(std::size_t n, const Box& box, double kT, std::uint64_t seed) {
+  System s;
+  s.box = box;
+  s.resize(n);
+  std::mt19937_64 eng(seed);
+  // Hand-written transforms rather than std:: distributions, whose output differs between standard libraries.
+  auto unit = [&] { return static_cast<double>(eng() >> 11) * 0x1p-53; };
+  auto gauss = [&] {
+    const double u1 = 1.0 - unit(), u2 = unit();
+    return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * 3.141592653589793 * u2);
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    s.x[i] = unit() * box.L[0];
+    s.y[i] = unit() * box.L[1];
+    s.z[i] = unit() * box.L[2];
+  }
+  const double sd = std::sqrt(kT);
+  for (std::size_t i = 0; i < n; ++i) s.vx[i] = sd * gauss(), s.vy[i] = sd * gauss(), s.vz[i] = sd * gauss();
+  if (n > 1) {
+    const auto p = s.momentum();
+    for (std::size_t i = 0; i < n; ++i) s.vx[i] -= p[0] / n, s.vy[i] -= p[1] / n, s.vz[i] -= p[2] / n;
+    // Exactly kT at the start, so short runs are not dominated by the first sample's deviation.
+    const double scale = std::sqrt(kT * (3.0 * n - 3.0) / s.kinetic_twice());
+    for (std::size_t i = 0; i < n; ++i) s.vx[i] *= scale, s.vy[i] *= scale, s.vz[i] *= scale;
+  }
+  return s;
+}
+
+}  // namespace dpdrng::dpd

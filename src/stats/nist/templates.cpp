@@ -1,0 +1,157 @@
+// Non-overlapping and overlapping template matching (SP800-22 2.7, 2.8).
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "common.hpp"
+#include "dpdrng/stats/nist/tests.hpp"
+
+namespace dpdrng::stats::nist {
+using namespace detail;
+
+std::vector<std::uint32_t> aperiodic_templates(int m) {
+  std::vector<std::uint32_t> out;
+  if (m < 1 || m > 24) return out;
+  for (std::uint32_t v = 0; v < (std::uint32_t{1} << m); ++v) {
+    // Unbordered: no proper prefix equals the suffix of the same length, so two matches can never overlap.
+    bool bordered = false;
+    for (int k = 1; k < m && !bordered; ++k) {
+      const std::uint32_t mask = (std::uint32_t{1} << k) - 1;
+      bordered = (v >> (m - k)) == (v & mask);
+    }
+    if (!bordered) out.push_back(v);
+  }
+  return out;
+}
+
+namespace {
+
+std::string bits_string(std::uint32_t v, int m) {
+  std::string s(static_cast<std::size_t>(m), '0');
+  for (int k = 0; k < m; ++k)
+    if ((v >> (m - 1 - k)) & 1) s[k] = '1';
+  return s;
+}
+
+}  // namespace
+
+TestResult non_overlapping_template(const BitSequence& s, int m, std::span<const std::uint32_t> templates,
+                                    int blocks) {
+  TestResult r = make(Test::NonOverlappingTemplate, s.size());
+  if (m < 2 || m > 21) return not_applicable(r, "template length m must be within 2..21", 0);
+  if (blocks < 1) return not_applicable(r, "the number of blocks must be positive", 0);
+  std::vector<std::uint32_t> own;
+  if (templates.empty()) {
+    own = aperiodic_templates(m);
+    templates = own;
+  }
+  for (std::uint32_t t : templates) r.values.push_back({bits_string(t, m), NAN, NAN});
+  const std::size_t N = static_cast<std::size_t>(blocks);
+  const std::size_t M = s.size() / N;
+  r.parameters = {{"m", m}, {"N", blocks}, {"M", static_cast<double>(M)}};
+  if (M < static_cast<std::size_t>(m))
+    return too_short(r, N * m, "each of the " + std::to_string(N) + " blocks must hold one template");
+  const double lambda = (M - m + 1) / std::pow(2, m);
+  const double varW = M * (1.0 / std::pow(2.0, m) - (2.0 * m - 1.0) / std::pow(2.0, 2.0 * m));
+  r.parameters.push_back({"lambda", lambda});
+
+  // One pass per block: the window value points at the template(s) equal to it; each template remembers where
+  // its last counted match ends, so counting restarts m bits after a match, as in the reference's scan.
+  const std::size_t T = templates.size();
+  std::vector<int> first(std::size_t{1} << m, -1), next_same(T, -1);
+  bool distinct = true;
+  for (std::size_t t = T; t-- > 0;) {
+    distinct = distinct && first[templates[t]] < 0;
+    next_same[t] = first[templates[t]];
+    first[templates[t]] = static_cast<int>(t);
+  }
+  std::vector<std::uint32_t> W(T * N, 0);
+  if (distinct) {
+    // Branch-free form: windows that match no template land in a dummy slot T.
+    std::vector<std::uint32_t> slot(std::size_t{1} << m, static_cast<std::uint32_t>(T));
+    for (std::size_t t = 0; t < T; ++t) slot[templates[t]] = static_cast<std::uint32_t>(t);
+    std::vector<std::size_t> free_from(T + 1);
+    std::vector<std::uint32_t> count(T + 1);
+    const unsigned shift = 64 - static_cast<unsigned>(m);
+    for (std::size_t i = 0; i < N; ++i) {
+      std::fill(free_from.begin(), free_from.end(), 0);
+      std::fill(count.begin(), count.end(), 0);
+      const std::size_t base = i * M, last = M - m;  // windows j = 0..last
+      for (std::size_t j0 = 0; j0 <= last; j0 += 64 - m + 1) {
+        const std::uint64_t x = s.word_at(base + j0);
+        const std::size_t cnt = std::min<std::size_t>(64 - m + 1, last - j0 + 1);
+        for (std::size_t k = 0; k < cnt; ++k) {
+          const std::size_t j = j0 + k;
+          const std::uint32_t t = slot[(x << k) >> shift];
+          const bool hit = j >= free_from[t];
+          count[t] += hit;
+          free_from[t] = hit ? j + m : free_from[t];
+        }
+      }
+      for (std::size_t t = 0; t < T; ++t) W[t * N + i] = count[t];
+    }
+  } else {
+    std::vector<std::size_t> free_from(T);
+    for (std::size_t i = 0; i < N; ++i) {
+      std::fill(free_from.begin(), free_from.end(), 0);
+      const std::size_t base = i * M;
+      for (std::size_t j = 0; j + m <= M; ++j) {
+        for (int t = first[s.bits_at(base + j, m)]; t >= 0; t = next_same[t]) {
+          if (j < free_from[t]) continue;
+          ++W[t * N + i];
+          free_from[t] = j + m;
+        }
+      }
+    }
+  }
+  for (std::size_t t = 0; t < T; ++t) {
+    double chi2 = 0;
+    for (std::size_t i = 0; i < N; ++i) chi2 += std::pow((W[t * N + i] - lambda) / std::sqrt(varW), 2);
+    r.values[t].statistic = chi2;
+    r.values[t].p = igamc(N / 2.0, chi2 / 2.0);
+  }
+  return r;
+}
+
+namespace {
+
+// The reference's Pr(u, eta): probability that an m-bit template of ones occurs u times in a block (the
+// corrected formula of SP800-22 rev1a 3.8).
+double overlap_probability(int u, double eta) {
+  if (u == 0) return std::exp(-eta);
+  double sum = 0;
+  for (int l = 1; l <= u; ++l)
+    sum += std::exp(-eta - u * std::log(2) + l * std::log(eta) - std::lgamma(l + 1) + std::lgamma(u) -
+                    std::lgamma(l) - std::lgamma(u - l + 1));
+  return sum;
+}
+
+}  // namespace
+
+TestResult overlapping_template(const BitSequence& s, int m, int M, int K) {
+  TestResult r = make(Test::OverlappingTemplate, s.size());
+  if (m < 1 || m > 32 || M < m || K < 1) return not_applicable(r, "needs 1 <= m <= 32, M >= m and K >= 1", 0);
+  const std::size_t N = s.size() / static_cast<std::size_t>(M);
+  const double lambda = static_cast<double>(M - m + 1) / std::pow(2, m);
+  const double eta = lambda / 2.0;
+  r.parameters = {{"m", m}, {"M", M}, {"K", K}, {"N", static_cast<double>(N)}, {"lambda", lambda}, {"eta", eta}};
+  if (N == 0) return too_short(r, static_cast<std::size_t>(M), "one block of M bits");
+  std::vector<double> pi(K + 1);
+  double sum = 0;
+  for (int i = 0; i < K; ++i) sum += pi[i] = overlap_probability(i, eta);
+  pi[K] = 1 - sum;
+  const std::uint32_t ones = static_cast<std::uint32_t>((std::uint64_t{1} << m) - 1);
+  std::vector<double> nu(K + 1, 0);
+  for (std::size_t i = 0; i < N; ++i) {
+    int w = 0;
+    for (std::size_t j = 0; j + m <= static_cast<std::size_t>(M); ++j) w += s.bits_at(i * M + j, m) == ones;
+    nu[std::min(w, K)] += 1;
+  }
+  double chi2 = 0;
+  for (int i = 0; i <= K; ++i) chi2 += std::pow(nu[i] - N * pi[i], 2) / (N * pi[i]);
+  r.values.push_back({"-", chi2, igamc(K / 2.0, chi2 / 2.0)});
+  return r;
+}
+
+}  // namespace dpdrng::stats::nist

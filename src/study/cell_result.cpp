@@ -1,0 +1,95 @@
+#include "dpdrng/study/cell_result.hpp"
+
+#include <stdexcept>
+
+namespace dpdrng::study {
+namespace {
+
+// Scalars with '/' in their name stay flat attributes on the cell group: one place to read them all.
+void read_datasets(hid_t group, const std::string& prefix, CellResult& r) {
+  for (const auto& name : h5::list(group)) {
+    if (h5::is_group(group, name)) {
+      h5::Handle sub = h5::open_group(group, name);
+      read_datasets(sub.id(), prefix + name + "/", r);
+      continue;
+    }
+    const std::string key = prefix + name;
+    if (h5::is_string_dataset(group, name)) {
+      r.strings[key] = h5::read_strings(group, name);
+      continue;
+    }
+    const auto dims = h5::shape(group, name);
+    auto data = h5::read_doubles(group, name);
+    if (dims.size() == 2)
+      r.matrices[key] = h5::Matrix{dims[0], dims[1], std::move(data)};
+    else
+      r.series[key] = std::move(data);
+  }
+}
+
+template <class T>
+T get(const std::map<std::string, h5::Attribute>& a, const std::string& name) {
+  auto it = a.find(name);
+  if (it == a.end()) throw std::runtime_error("cell record lacks attribute " + name);
+  if (const T* v = std::get_if<T>(&it->second)) return *v;
+  throw std::runtime_error("cell record attribute " + name + " has the wrong type");
+}
+
+}  // namespace
+
+void write_cell(hid_t g, const CellResult& r) {
+  const Cell& c = r.cell;
+  h5::write_attribute(g, "cell.id", c.id());
+  h5::write_attribute(g, "cell.generator", c.generator);
+  h5::write_attribute(g, "cell.rounds", std::int64_t{c.rounds});
+  h5::write_attribute(g, "cell.distribution", c.distribution);
+  h5::write_attribute(g, "cell.seeding", c.seeding);
+  h5::write_attribute(g, "cell.dt", c.dt);
+  h5::write_attribute(g, "cell.replica", std::int64_t{c.replica});
+  h5::write_attribute(g, "cell.reference", std::int64_t{c.reference});
+  h5::write_attribute(g, "cell.nist", std::int64_t{c.nist});
+  // As a string: HDF5 has a uint64 type but h5dump users compare seeds by eye, and int64 would wrap.
+  h5::write_attribute(g, "cell.seed", std::to_string(c.seed));
+  h5::write_attribute(g, "status", r.status);
+  h5::write_attribute(g, "unstable_step", std::int64_t{r.unstable_step});
+  h5::write_attribute(g, "reason", r.reason);
+  h5::write_attribute(g, "seconds", r.seconds);
+  for (const auto& [k, v] : r.scalars) h5::write_attribute(g, k, v);
+  for (const auto& [k, v] : r.notes) h5::write_attribute(g, "note." + k, v);
+  for (const auto& [k, v] : r.series) h5::write_series(g, k, v);
+  for (const auto& [k, v] : r.matrices) h5::write_matrix(g, k, v);
+  for (const auto& [k, v] : r.strings) h5::write_strings(g, k, v);
+}
+
+CellResult read_cell(hid_t g) {
+  const auto a = h5::read_attributes(g);
+  CellResult r;
+  Cell& c = r.cell;
+  c.generator = get<std::string>(a, "cell.generator");
+  c.rounds = static_cast<int>(get<std::int64_t>(a, "cell.rounds"));
+  c.distribution = get<std::string>(a, "cell.distribution");
+  c.seeding = get<std::string>(a, "cell.seeding");
+  c.dt = get<double>(a, "cell.dt");
+  c.replica = static_cast<int>(get<std::int64_t>(a, "cell.replica"));
+  c.reference = get<std::int64_t>(a, "cell.reference") != 0;
+  c.nist = get<std::int64_t>(a, "cell.nist") != 0;
+  c.seed = std::stoull(get<std::string>(a, "cell.seed"));
+  r.status = get<std::string>(a, "status");
+  r.unstable_step = static_cast<long>(get<std::int64_t>(a, "unstable_step"));
+  r.reason = get<std::string>(a, "reason");
+  r.seconds = get<double>(a, "seconds");
+  for (const auto& [k, v] : a) {
+    if (k.rfind("cell.", 0) == 0 || k == "status" || k == "unstable_step" || k == "reason" || k == "seconds") continue;
+    if (k.rfind("note.", 0) == 0) {
+      if (const auto* s = std::get_if<std::string>(&v)) r.notes[k.substr(5)] = *s;
+    } else if (const auto* d = std::get_if<double>(&v)) {
+      r.scalars[k] = *d;
+    } else if (const auto* i = std::get_if<std::int64_t>(&v)) {
+      r.scalars[k] = static_cast<double>(*i);
+    }
+  }
+  read_datasets(g, "", r);
+  return r;
+}
+
+}  // namespace dpdrng::study

@@ -1,0 +1,333 @@
+#include "dpdrng/study/config.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <toml++/toml.h>
+
+#include "dpdrng/common/error.hpp"
+#include "dpdrng/rng/registry.hpp"
+
+namespace dpdrng::study {
+namespace {
+
+// Reads one TOML table, remembering which keys were used, so that a misspelt key is an error rather than
+// a silently ignored setting.
+class Section {
+ public:
+  Section(const toml::table* t, std::string path, std::string origin)
+      : t_(t), path_(std::move(path)), origin_(std::move(origin)) {}
+
+  [[noreturn]] void fail(const std::string& key, const std::string& problem) const {
+    throw InputError(origin_ + ": " + full(key) + ": " + problem);
+  }
+  std::string full(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+
+  const toml::node* get(const std::string& key) {
+    used_.insert(key);
+    return t_ ? t_->get(key) : nullptr;
+  }
+
+  std::string str(const std::string& key, std::string def) {
+    const toml::node* n = get(key);
+    if (!n) return def;
+    if (!n->is_string()) fail(key, "must be a string");
+    return std::string(*n->value<std::string>());
+  }
+  double num(const std::string& key, double def, double lo, double hi, bool lo_open = false) {
+    const toml::node* n = get(key);
+    if (!n) return def;
+    return check_num(key, *n, lo, hi, lo_open);
+  }
+  long integer(const std::string& key, long def, long lo, long hi) {
+    const toml::node* n = get(key);
+    if (!n) return def;
+    return check_int(key, *n, lo, hi);
+  }
+  std::vector<std::string> strings(const std::string& key, std::vector<std::string> def) {
+    const toml::node* n = get(key);
+    if (!n) return def;
+    const toml::array* a = n->as_array();
+    if (!a) fail(key, "must be an array of strings");
+    std::vector<std::string> out;
+    for (const auto& e : *a) {
+      if (!e.is_string()) fail(key, "must be an array of strings");
+      out.emplace_back(*e.value<std::string>());
+    }
+    if (out.empty()) fail(key, "must not be empty");
+    return out;
+  }
+  std::vector<long> integers(const std::string& key, long lo, long hi) {
+    const toml::node* n = get(key);
+    if (!n) return {};
+    std::vector<long> out;
+    if (const toml::array* a = n->as_array()) {
+      for (const auto& e : *a) out.push_back(check_int(key, e, lo, hi));
+      if (out.empty()) fail(key, "must not be empty");
+    } else {
+      out.push_back(check_int(key, *n, lo, hi));
+    }
+    return out;
+  }
+  std::vector<double> numbers(const std::string& key, std::vector<double> def, double lo, double hi, bool lo_open) {
+    const toml::node* n = get(key);
+    if (!n) return def;
+    std::vector<double> out;
+    if (const toml::array* a = n->as_array()) {
+      for (const auto& e : *a) out.push_back(check_num(key, e, lo, hi, lo_open));
+      if (out.empty()) fail(key, "must not be empty");
+    } else {
+      out.push_back(check_num(key, *n, lo, hi, lo_open));
+    }
+    return out;
+  }
+  Section sub(const std::string& key) {
+    const toml::node* n = get(key);
+    if (n && !n->is_table()) fail(key, "must be a table");
+    return Section(n ? n->as_table() : nullptr, full(key), origin_);
+  }
+  const toml::array* array_of_tables(const std::string& key) {
+    const toml::node* n = get(key);
+    if (!n) return nullptr;
+    if (!n->is_array_of_tables()) fail(key, "must be an array of tables ([[" + full(key) + "]])");
+    return n->as_array();
+  }
+  // Every key not read is unknown: name it, and the keys that are allowed.
+  void finish() const {
+    if (!t_) return;
+    for (const auto& [k, v] : *t_) {
+      const std::string key(k.str());
+      if (!used_.count(key)) {
+        std::string allowed;
+        for (const auto& u : used_) allowed += (allowed.empty() ? "" : ", ") + u;
+        fail(key, "unknown key (allowed here: " + allowed + ")");
+      }
+    }
+  }
+
+ private:
+  double check_num(const std::string& key, const toml::node& n, double lo, double hi, bool lo_open) const {
+    double v;
+    if (auto d = n.value_exact<double>())
+      v = *d;
+    else if (auto i = n.value_exact<std::int64_t>())
+      v = static_cast<double>(*i);
+    else
+      fail(key, "must be a number");
+    if (!std::isfinite(v)) fail(key, "must be finite (got " + std::to_string(v) + ")");
+    if (v < lo || v > hi || (lo_open && v == lo)) {
+      std::ostringstream msg;
+      msg << "out of range: " << v << " not in " << (lo_open ? "(" : "[") << lo << ", " << hi << "]";
+      fail(key, msg.str());
+    }
+    return v;
+  }
+  long check_int(const std::string& key, const toml::node& n, long lo, long hi) const {
+    auto i = n.value_exact<std::int64_t>();
+    if (!i) fail(key, "must be an integer");
+    if (*i < lo || *i > hi)
+      fail(key, "out of range: " + std::to_string(*i) + " not in [" + std::to_string(lo) + ", " +
+                    std::to_string(hi) + "]");
+    return static_cast<long>(*i);
+  }
+
+  const toml::table* t_;
+  std::string path_, origin_;
+  std::set<std::string> used_;
+};
+
+void check_unique(Section& s, const std::string& key, std::vector<std::string> v) {
+  std::sort(v.begin(), v.end());
+  if (std::adjacent_find(v.begin(), v.end()) != v.end()) s.fail(key, "lists a value twice");
+}
+
+std::vector<std::string> valid_distributions(Section& s, const std::string& key, std::vector<std::string> v) {
+  for (const auto& d : v) try {
+      rng::parse_distribution(d);
+    } catch (const InputError& e) {
+      s.fail(key, e.what());
+    }
+  check_unique(s, key, v);
+  return v;
+}
+
+std::vector<std::string> valid_seedings(Section& s, const std::string& key, std::vector<std::string> v) {
+  for (const auto& name : v) {
+    rng::Seeding seeding;
+    try {
+      seeding = rng::parse_seeding(name);
+    } catch (const InputError& e) {
+      s.fail(key, e.what());
+    }
+    if (seeding == rng::Seeding::counter) s.fail(key, "'counter' makes standalone streams, not pair noise");
+  }
+  check_unique(s, key, v);
+  return v;
+}
+
+const rng::GeneratorInfo& known_generator(Section& s, const std::string& key, const std::string& name) {
+  try {
+    return rng::find_generator(name);
+  } catch (const InputError& e) {
+    s.fail(key, e.what());
+  }
+}
+
+}  // namespace
+
+std::string fnv1a64_hex(const std::string& text) {
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  for (unsigned char c : text) {
+    h ^= c;
+    h *= 0x100000001b3ull;
+  }
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
+nlohmann::json StudyConfig::canonical() const {
+  nlohmann::json gens = nlohmann::json::array();
+  for (const auto& g : generators) gens.push_back({{"name", g.name}, {"rounds", g.rounds}, {"seedings", g.seedings}});
+  return {
+      {"name", name},
+      {"reference", reference},
+      {"replicas", replicas},
+      {"seed", seed},
+      {"generators", gens},
+      {"distributions", distributions},
+      {"seedings", seedings},
+      {"scene",
+       {{"name", scene.name}, {"particles", scene.particles}, {"density", scene.density}, {"a", scene.a},
+        {"gamma", scene.gamma}, {"kT", scene.kT}, {"lambda", scene.lambda}, {"dt", scene.dt},
+        {"steps", scene.steps}, {"equilibrate", scene.equilibrate}, {"pairs", scene.pairs}}},
+      {"tests",
+       {{"alpha", tests.alpha}, {"chi2_steps", tests.chi2_steps}, {"ttest_pairs", tests.ttest_pairs},
+        {"nist_sequences", tests.nist_sequences}, {"nist_bits", tests.nist_bits},
+        {"nist_generators", tests.nist_generators}, {"nist_distributions", tests.nist_distributions},
+        {"nist_replicas", tests.nist_replicas}}},
+      {"cost", {{"numbers", cost.numbers}}},
+  };
+}
+
+StudyConfig parse_config(const std::string& toml_text, const std::string& origin) {
+  toml::table root;
+  try {
+    root = toml::parse(toml_text, origin);
+  } catch (const toml::parse_error& e) {
+    std::ostringstream msg;
+    msg << origin << ":" << e.source().begin.line << ":" << e.source().begin.column << ": " << e.description();
+    throw InputError(msg.str());
+  }
+  StudyConfig c;
+  c.source_text = toml_text;
+  Section top(&root, "", origin);
+
+  Section st = top.sub("study");
+  c.name = st.str("name", "");
+  if (c.name.empty()) st.fail("name", "is required");
+  if (c.name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-.") !=
+      std::string::npos)
+    st.fail("name", "may contain only letters, digits, '_', '-' and '.' (it names a directory)");
+  c.description = st.str("description", "");
+  c.reference = st.str("reference", c.reference);
+  if (known_generator(st, "reference", c.reference).keyed_hash)
+    st.fail("reference", "must be a stream generator (mt19937)");
+  c.replicas = static_cast<int>(st.integer("replicas", c.replicas, 1, 1000));
+  c.seed = static_cast<std::uint64_t>(st.integer("seed", 1, 0, std::numeric_limits<long>::max()));
+  st.finish();
+
+  Section sw = top.sub("sweep");
+  c.distributions = valid_distributions(sw, "distributions", sw.strings("distributions", c.distributions));
+  c.seedings = valid_seedings(sw, "seedings", sw.strings("seedings", c.seedings));
+  const toml::array* gens = sw.array_of_tables("generator");
+  if (!gens || gens->empty()) sw.fail("generator", "at least one [[sweep.generator]] is required");
+  for (std::size_t k = 0; k < gens->size(); ++k) {
+    Section g(gens->get(k)->as_table(), sw.full("generator") + "[" + std::to_string(k) + "]", origin);
+    GeneratorEntry e;
+    e.name = g.str("name", "");
+    if (e.name.empty()) g.fail("name", "is required");
+    if (!known_generator(g, "name", e.name).keyed_hash)
+      g.fail("name", "'" + e.name + "' is a stream, not a pair-keyed hash (it is the reference, always run)");
+    for (long r : g.integers("rounds", 1, 1 << 20)) {
+      rng::GeneratorSpec spec;
+      spec.name = e.name;
+      spec.rounds = static_cast<int>(r);
+      try {
+        rng::validated(spec);
+      } catch (const InputError& ex) {
+        g.fail("rounds", ex.what());
+      }
+      if (std::find(e.rounds.begin(), e.rounds.end(), r) != e.rounds.end()) g.fail("rounds", "lists a value twice");
+      e.rounds.push_back(static_cast<int>(r));
+    }
+    if (e.rounds.empty()) e.rounds.push_back(rng::validated(rng::GeneratorSpec{e.name, 0, rng::kPaperTeaKey}).rounds);
+    if (g.get("seedings")) e.seedings = valid_seedings(g, "seedings", g.strings("seedings", {}));
+    g.finish();
+    for (const auto& prev : c.generators)
+      if (prev.name == e.name) g.fail("name", "'" + e.name + "' appears twice; list all its rounds in one entry");
+    c.generators.push_back(std::move(e));
+  }
+  sw.finish();
+
+  Section sc = top.sub("scene");
+  auto& s = c.scene;
+  s.name = sc.str("name", s.name);
+  if (s.name != "water") sc.fail("name", "unknown scene '" + s.name + "' (known: water)");
+  s.particles = static_cast<int>(sc.integer("particles", s.particles, 2, 10'000'000));
+  s.density = sc.num("density", s.density, 0, 100, true);
+  s.a = sc.num("a", s.a, 0, 1e6);
+  s.gamma = sc.num("gamma", s.gamma, 0, 1e6);
+  s.kT = sc.num("kT", s.kT, 0, 1e6, true);
+  s.lambda = sc.num("lambda", s.lambda, 0, 1);
+  s.dt = sc.numbers("dt", s.dt, 0, 10, true);
+  s.steps = sc.integer("steps", s.steps, 2, 1'000'000'000);
+  s.equilibrate = sc.integer("equilibrate", s.equilibrate, 0, 1'000'000'000);
+  if (s.equilibrate >= s.steps) sc.fail("equilibrate", "must be less than scene.steps");
+  s.pairs = sc.str("pairs", s.pairs);
+  if (s.pairs != "all" && s.pairs != "cells") sc.fail("pairs", "must be 'all' or 'cells'");
+  sc.finish();
+
+  Section te = top.sub("tests");
+  auto& t = c.tests;
+  t.alpha = te.num("alpha", t.alpha, 0, 0.5, true);
+  const long production = s.steps - s.equilibrate;
+  t.chi2_steps = te.integer("chi2_steps", t.chi2_steps, 0, production);
+  const long pairs = static_cast<long>(s.particles) * (s.particles - 1) / 2;
+  t.ttest_pairs = te.integer("ttest_pairs", t.ttest_pairs, 0, pairs);
+  if (t.ttest_pairs > 0 && production < 4) te.fail("ttest_pairs", "needs at least 4 production steps");
+  t.nist_sequences = te.integer("nist_sequences", t.nist_sequences, 1, 100'000);
+  t.nist_bits = te.integer("nist_bits", t.nist_bits, 64, 1L << 30);
+  if (t.nist_bits % 64 != 0) te.fail("nist_bits", "must be a multiple of 64 (sequences are cut from 64-bit words)");
+  t.nist_generators = te.get("nist_generators") ? te.strings("nist_generators", {}) : std::vector<std::string>{};
+  for (const auto& g : t.nist_generators) {
+    const bool known = g == c.reference || std::any_of(c.generators.begin(), c.generators.end(),
+                                                        [&](const GeneratorEntry& e) { return e.name == g; });
+    if (!known) te.fail("nist_generators", "'" + g + "' is not swept by this study");
+  }
+  t.nist_distributions = valid_distributions(te, "nist_distributions", te.strings("nist_distributions",
+                                                                                  t.nist_distributions));
+  t.nist_replicas = static_cast<int>(te.integer("nist_replicas", t.nist_replicas, 0, c.replicas));
+  te.finish();
+
+  Section co = top.sub("cost");
+  c.cost.numbers = co.integer("numbers", c.cost.numbers, 1024, 1L << 32);
+  co.finish();
+
+  top.finish();
+  c.hash = fnv1a64_hex(c.canonical().dump());
+  return c;
+}
+
+StudyConfig load_config(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot read the study config");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_config(text.str(), path);
+}
+
+}  // namespace dpdrng::study

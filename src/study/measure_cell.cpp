@@ -1,0 +1,27 @@
+// One cell, end to end: plan the taps, run the engine, and hand the taps to the tests. The taps are dropped
+// as soon as the tests have seen them (they are the bulk of a cell's memory).
+#include "dpdrng/dpd/water.hpp"
+#include "dpdrng/rng/stream.hpp"
+#include "dpdrng/study/measure.hpp"
+
+namespace dpdrng::study {
+
+CellResult measure_cell(const Cell& cell, const StudyConfig& config, int threads) {
+  CellResult out;
+  out.cell = cell;
+  const rng::GeneratorSpec spec = rng::validated(rng::GeneratorSpec{cell.generator, cell.rounds, rng::kPaperTeaKey});
+  const int words = cell.reference ? 1 : rng::words_per_call(spec);
+  const TapPlan plan = plan_taps(cell, config, words);
+  dpd::RunResult run = dpd::run_water(engine_config(cell, config, threads, plan));
+  record_run(run, out);
+  // A blown-up run still has taps up to the blow-up; its tests would describe a broken trajectory, so the
+  // cell keeps the observables up to that step and the reason, and skips the tests.
+  if (out.status != "ok") return out;
+  record_chi2(run.taps, plan, config.tests, out);
+  record_ttest(run.taps, config.tests, out);
+  record_correlations(run.taps, config.tests, out);
+  if (cell.nist) record_nist(run.taps, plan, config.tests, threads, out);
+  return out;
+}
+
+}  // namespace dpdrng::study

@@ -1,0 +1,134 @@
+// The engine side of a cell: which steps and pairs to tap, the WaterConfig, and the RunResult's observables.
+#include <algorithm>
+#include <cstdio>
+#include <set>
+
+#include "dpdrng/rng/registry.hpp"
+#include "dpdrng/study/measure.hpp"
+
+namespace dpdrng::study {
+
+TapPlan plan_taps(const Cell& cell, const StudyConfig& config, int words_per_pair) {
+  const auto& s = config.scene;
+  const auto& t = config.tests;
+  const std::int64_t production = s.steps - s.equilibrate;
+  TapPlan plan;
+  const std::int64_t m = std::min<std::int64_t>(t.chi2_steps, production);
+  for (std::int64_t k = 0; k < m; ++k) plan.chi2_steps.push_back(s.equilibrate + 1 + k * production / m);
+
+  if (cell.nist) {
+    // Every pair draws every step only in `all` mode; in `cells` mode the count varies, so tap generously.
+    const std::int64_t pairs = std::int64_t(s.particles) * (s.particles - 1) / 2;
+    const std::int64_t per_step = (s.pairs == "all" ? pairs : pairs / 8) * words_per_pair;
+    const std::int64_t words = (t.nist_sequences * t.nist_bits + 63) / 64;
+    const std::int64_t need = std::min<std::int64_t>((words + per_step - 1) / per_step, production);
+    for (std::int64_t k = s.steps - need + 1; k <= s.steps; ++k) plan.nist_steps.push_back(k);
+  }
+
+  // Couples (i, j), (i, j+1): neighbouring pair ids, the inputs a weak hash is most likely to correlate.
+  const auto n = static_cast<std::uint32_t>(s.particles);
+  const std::int64_t couples = (t.ttest_pairs + 1) / 2;
+  std::set<std::pair<std::uint32_t, std::uint32_t>> seen;
+  for (std::int64_t c = 0; c < couples && n >= 3; ++c) {
+    const auto i = static_cast<std::uint32_t>(c * (n - 2) / couples);
+    const auto j = i + 1 + static_cast<std::uint32_t>((c * 37) % (n - i - 2 > 0 ? n - i - 2 : 1));
+    for (auto p : {std::pair{i, j}, std::pair{i, j + 1}})
+      if (std::int64_t(plan.pairs.size()) < t.ttest_pairs && p.second < n && seen.insert(p).second)
+        plan.pairs.push_back(p);
+  }
+  return plan;
+}
+
+dpd::WaterConfig engine_config(const Cell& cell, const StudyConfig& config, int threads, const TapPlan& plan) {
+  const auto& s = config.scene;
+  dpd::WaterConfig w;
+  w.particles = s.particles;
+  w.density = s.density;
+  w.a = s.a;
+  w.kT = s.kT;
+  w.gamma = s.gamma;
+  w.lambda = s.lambda;
+  w.dt = cell.dt;
+  w.steps = s.steps;
+  w.equilibrate = s.equilibrate;
+  w.pairs = dpd::parse_pair_mode(s.pairs);
+  w.generator = rng::validated(rng::GeneratorSpec{cell.generator, cell.rounds, rng::kPaperTeaKey});
+  w.seeding = cell.reference ? rng::Seeding::distance : rng::parse_seeding(cell.seeding);  // ignored by a stream
+  w.distribution = rng::parse_distribution(cell.distribution);
+  w.seed = cell.seed;
+  // The same initial state for every generator of a replica: differences between generators are then not
+  // diluted by different starting points (paired comparison).
+  w.init_seed = cell.seed;
+  w.threads = threads;
+  w.series = true;
+  std::set<std::int64_t> raw(plan.chi2_steps.begin(), plan.chi2_steps.end());
+  raw.insert(plan.nist_steps.begin(), plan.nist_steps.end());
+  w.taps.raw_steps.assign(raw.begin(), raw.end());
+  w.taps.pairs = plan.pairs;
+  return w;
+}
+
+namespace {
+// At most ~`points` samples of a long series, evenly strided: the chart needs the shape, not every step.
+std::vector<double> thin(const std::vector<double>& v, std::size_t points) {
+  if (v.size() <= points) return v;
+  std::vector<double> out;
+  const std::size_t stride = (v.size() + points - 1) / points;
+  for (std::size_t k = 0; k < v.size(); k += stride) out.push_back(v[k]);
+  return out;
+}
+}  // namespace
+
+void record_run(const dpd::RunResult& r, CellResult& out) {
+  if (!r.ok()) {
+    out.status = "unstable";
+    out.unstable_step = static_cast<long>(r.steps_done);
+    out.reason = r.status;
+  }
+  auto& sc = out.scalars;
+  sc["steps_done"] = double(r.steps_done);
+  sc["temperature_mean"] = r.temperature.mean;
+  sc["temperature_std"] = r.temperature.std;
+  sc["temperature_sem"] = r.temperature.sem;
+  sc["pressure_mean"] = r.pressure.mean;
+  sc["pressure_sem"] = r.pressure.sem;
+  sc["pressure_conservative_mean"] = r.pressure_conservative.mean;
+  sc["pressure_xx"] = r.pressure_diag[0].mean;
+  sc["pressure_yy"] = r.pressure_diag[1].mean;
+  sc["pressure_zz"] = r.pressure_diag[2].mean;
+  sc["momentum_drift"] = r.momentum_drift;
+  if (!r.msd.msd.empty()) {
+    sc["diffusion_coefficient"] = r.msd.diffusion;
+    sc["diffusion_sem"] = r.msd.diffusion_sem;
+    out.series["msd/tau"] = r.msd.tau;
+    out.series["msd/msd"] = r.msd.msd;
+  }
+  const auto& v = r.velocity_pdf;
+  if (!v.v.empty()) {
+    sc["vpdf_error_mb"] = v.error_rate_kT_mean;
+    sc["vpdf_error_mb_measured_T"] = v.error_rate_measured_mean;
+    std::vector<double> pooled(v.v.size(), 0.0);
+    for (std::size_t k = 0; k < pooled.size(); ++k) pooled[k] = (v.pdf[0][k] + v.pdf[1][k] + v.pdf[2][k]) / 3.0;
+    out.series["vpdf/v"] = v.v;
+    out.series["vpdf/p"] = pooled;
+    out.series["vpdf/mb"] = v.mb_kT;
+  }
+  if (!r.rdf.g.empty()) {
+    out.series["rdf/r"] = r.rdf.r;
+    out.series["rdf/g"] = r.rdf.g;
+  }
+  if (!r.series.temperature.empty()) {
+    std::vector<double> steps(r.series.step.begin(), r.series.step.end());
+    out.series["series/step"] = thin(steps, 1000);
+    out.series["series/temperature"] = thin(r.series.temperature, 1000);
+  }
+  const auto& t = r.timings;
+  sc["cost.run_seconds"] = t.total_s;
+  sc["cost.step_seconds"] = t.per_step_s;
+  sc["cost.ns_per_number"] = t.ns_per_number;
+  sc["cost.rng_share"] = t.rng_share_estimate;
+  sc["cost.particle_steps_per_second"] = t.particle_steps_per_s;
+  if (r.steps_done > 0) sc["cost.numbers_per_step"] = double(t.random_numbers) / double(r.steps_done);
+}
+
+}  // namespace dpdrng::study

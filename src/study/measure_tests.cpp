@@ -1,0 +1,113 @@
+// The paper's two tests as pass fractions (χ² per tapped step, lag-1 t per tapped pair) and the correlation
+// checks of ζ across neighbouring pairs and consecutive steps, all on what the engine tapped.
+#include <algorithm>
+#include <cmath>
+
+#include "dpdrng/rng/distribution.hpp"
+#include "dpdrng/stats/chi2.hpp"
+#include "dpdrng/stats/correlation.hpp"
+#include "dpdrng/stats/pass_fraction.hpp"
+#include "dpdrng/stats/ttest.hpp"
+#include "dpdrng/study/measure.hpp"
+
+namespace dpdrng::study {
+namespace {
+
+// Output word k of a call is its own stream: 64TEA's a and b are judged apart, as the paper does.
+const char* stream_name(int words_per_pair, int k) {
+  if (words_per_pair == 1) return "x";
+  return k == 0 ? "a" : "b";
+}
+
+void record_fraction(const std::string& base, const std::vector<stats::Verdict>& verdicts, double alpha,
+                     CellResult& out) {
+  stats::PassFractionOptions o;
+  o.alpha = alpha;
+  const stats::PassFraction f = stats::pass_fraction(std::span<const stats::Verdict>(verdicts), o);
+  out.scalars[base + ".trials"] = double(f.trials);
+  out.scalars[base + ".passed"] = double(f.passed);
+  out.scalars[base + ".not_applicable"] = double(f.not_applicable);
+  out.scalars[base + ".fraction"] = f.fraction;
+  out.scalars[base + ".ci_low"] = f.ci_low;
+  out.scalars[base + ".ci_high"] = f.ci_high;
+  out.scalars[base + ".binomial_p"] = f.binomial_p;
+}
+
+std::vector<double> to_unit(const std::vector<std::uint64_t>& words) {
+  std::vector<double> u(words.size());
+  std::transform(words.begin(), words.end(), u.begin(), [](std::uint64_t w) { return rng::to_unit(w); });
+  return u;
+}
+
+}  // namespace
+
+void record_chi2(const dpd::Taps& taps, const TapPlan& plan, const TestParams& tests, CellResult& out) {
+  if (plan.chi2_steps.empty()) return;
+  int wpp = 0;
+  for (const auto& t : taps.raw) wpp = std::max(wpp, t.words_per_pair);
+  for (int k = 0; k < wpp; ++k) {
+    std::vector<stats::Verdict> verdicts;
+    std::vector<double> p, stat;
+    for (const auto& t : taps.raw) {
+      if (!std::binary_search(plan.chi2_steps.begin(), plan.chi2_steps.end(), t.step)) continue;
+      const auto u = to_unit(t.words[std::size_t(k)]);
+      const stats::Chi2Result r = stats::chi2_uniform(u, stats::Chi2Options{0, tests.alpha});
+      verdicts.push_back(r.verdict);
+      p.push_back(r.verdict == stats::Verdict::not_applicable ? NAN : r.p_value);
+      stat.push_back(r.statistic);
+      if (verdicts.size() == 1) out.scalars[std::string("chi2.") + stream_name(wpp, k) + ".bins"] = r.bins;
+    }
+    const std::string s = stream_name(wpp, k);
+    record_fraction("chi2." + s, verdicts, tests.alpha, out);
+    out.series["chi2/" + s + "/p"] = p;
+    out.series["chi2/" + s + "/statistic"] = stat;
+  }
+}
+
+void record_ttest(const dpd::Taps& taps, const TestParams& tests, CellResult& out) {
+  if (taps.series.empty()) return;
+  const int wpp = taps.series.front().words_per_pair;
+  for (int k = 0; k < wpp; ++k) {
+    std::vector<stats::Verdict> verdicts;
+    std::vector<double> p, r;
+    for (const auto& ps : taps.series) {
+      const stats::Lag1Result t = stats::lag1_ttest(to_unit(ps.words[std::size_t(k)]), tests.alpha);
+      verdicts.push_back(t.verdict);
+      p.push_back(t.verdict == stats::Verdict::not_applicable ? NAN : t.p_value);
+      r.push_back(t.r);
+    }
+    const std::string s = stream_name(wpp, k);
+    record_fraction("ttest." + s, verdicts, tests.alpha, out);
+    out.scalars["ttest." + s + ".steps"] = double(taps.series.front().words[std::size_t(k)].size());
+    out.series["ttest/" + s + "/p"] = p;
+    out.series["ttest/" + s + "/r"] = r;
+  }
+}
+
+void record_correlations(const dpd::Taps& taps, const TestParams& tests, CellResult& out) {
+  if (taps.series.size() < 2) return;
+  const std::size_t steps = taps.series.front().zeta.size();
+  std::vector<double> zeta;
+  for (const auto& ps : taps.series) {
+    if (ps.zeta.size() != steps) return;  // an unstable run can leave ragged series; nothing sound to pool
+    zeta.insert(zeta.end(), ps.zeta.begin(), ps.zeta.end());
+  }
+  const auto m = stats::NoiseMatrix::pair_major(zeta, taps.series.size(), steps);
+  // The tapped pairs come in couples (i, j), (i, j+1): rows 2c and 2c+1.
+  std::vector<std::pair<std::size_t, std::size_t>> couples;
+  for (std::size_t r = 0; r + 1 < taps.series.size(); r += 2)
+    if (taps.series[r].i == taps.series[r + 1].i && taps.series[r + 1].j == taps.series[r].j + 1)
+      couples.emplace_back(r, r + 1);
+  if (!couples.empty()) {
+    const auto c = stats::cross_pair_correlation(m, couples, tests.alpha);
+    out.scalars["corr.pair.r"] = c.r;
+    out.scalars["corr.pair.p"] = c.p_value;
+    out.scalars["corr.pair.n"] = double(c.n);
+  }
+  const auto t = stats::across_time_correlation(m, 1, tests.alpha);
+  out.scalars["corr.time.r"] = t.r;
+  out.scalars["corr.time.p"] = t.p_value;
+  out.scalars["corr.time.n"] = double(t.n);
+}
+
+}  // namespace dpdrng::study

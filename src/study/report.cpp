@@ -1,0 +1,213 @@
+// report.md: the tables and charts of one study, with what each verdict rests on.
+#include "dpdrng/study/report.hpp"
+
+#include <cmath>
+#include <ctime>
+#include <fstream>
+#include <ostream>
+#include <set>
+#include <sstream>
+
+#include "dpdrng/study/store.hpp"
+
+namespace dpdrng::study {
+namespace fs = std::filesystem;
+namespace {
+
+void write(const fs::path& p, const std::string& text) {
+  std::ofstream out(p, std::ios::binary | std::ios::trunc);
+  out << text;
+  if (!out) throw std::runtime_error("cannot write " + p.string());
+}
+
+std::string num(double x) {
+  if (!std::isfinite(x)) return "";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", x);
+  return buf;
+}
+
+// Every scalar of every cell, one row a cell: the flat view for spreadsheets.
+std::string cells_csv(const std::vector<CellResult>& cells) {
+  std::set<std::string> names;
+  for (const auto& c : cells)
+    for (const auto& [k, v] : c.scalars) names.insert(k);
+  std::ostringstream o;
+  o << "id,generator,rounds,distribution,seeding,dt,replica,status,unstable_step,seconds";
+  for (const auto& n : names) o << ',' << n;
+  o << '\n';
+  for (const auto& c : cells) {
+    o << c.cell.id() << ',' << c.cell.generator << ',' << c.cell.rounds << ',' << c.cell.distribution << ','
+      << c.cell.seeding << ',' << num(c.cell.dt) << ',' << c.cell.replica << ',' << c.status << ','
+      << c.unstable_step << ',' << num(c.seconds);
+    for (const auto& n : names) o << ',' << (c.has(n) ? num(c.scalar(n, NAN)) : "");
+    o << '\n';
+  }
+  return o.str();
+}
+
+std::string correlation_markdown(const Analysis& a) {
+  std::ostringstream o;
+  o << "| generator | distribution | ζ(i,j,t) vs ζ(i,j+1,t): r (p) | ζ(i,j,t) vs ζ(i,j,t+1): r (p) |\n|---|---|---|---|\n";
+  bool any = false;
+  for (const auto& v : a.variants) {
+    std::vector<double> rp, pp, rt, pt;
+    for (const auto* c : v.cells) {
+      if (c->has("corr.pair.r")) rp.push_back(c->scalar("corr.pair.r", NAN)), pp.push_back(c->scalar("corr.pair.p", NAN));
+      if (c->has("corr.time.r")) rt.push_back(c->scalar("corr.time.r", NAN)), pt.push_back(c->scalar("corr.time.p", NAN));
+    }
+    if (rp.empty() && rt.empty()) continue;
+    any = true;
+    const auto cell = [&](const std::vector<double>& r, const std::vector<double>& p) {
+      if (r.empty()) return std::string("–");
+      // Largest |r| and smallest p over the replicas: the case that would worry a user.
+      double worst_r = 0, min_p = 1;
+      for (double x : r) worst_r = std::abs(x) > std::abs(worst_r) ? x : worst_r;
+      for (double x : p) min_p = std::min(min_p, x);
+      char buf[80];
+      std::snprintf(buf, sizeof buf, "%s%+.4f (%.2g)%s", min_p < a.alpha / double(p.size()) ? "**" : "", worst_r, min_p,
+                    min_p < a.alpha / double(p.size()) ? "**" : "");
+      return std::string(buf);
+    };
+    o << "| " << v.key.label() << (v.key.reference ? "" : " " + v.key.seeding) << " | " << v.key.distribution << " | "
+      << cell(rp, pp) << " | " << cell(rt, pt) << " |\n";
+  }
+  return any ? o.str() : "(no correlation taps stored)\n";
+}
+
+std::string chart(const std::string& name, const std::string& alt) {
+  return "![" + alt + "](charts/" + name + ".png)  \n[SVG](charts/" + name + ".svg) · [gnuplot script](charts/" + name +
+         ".gp)\n\n";
+}
+
+}  // namespace
+
+fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& cells, const fs::path& study_dir,
+                      const ReportOptions& options) {
+  const fs::path dir = study_dir / "report";
+  fs::create_directories(dir / "charts");
+  const Analysis a = analyse(config, cells);
+  const std::size_t expected = enumerate_cells(config).size();
+
+  std::vector<std::string> dists;
+  for (const auto& v : a.variants)
+    if (std::find(dists.begin(), dists.end(), v.key.distribution) == dists.end()) dists.push_back(v.key.distribution);
+
+  write(dir / "summary.csv", summary_csv(a));
+  write(dir / "pass_table.csv", pass_table_csv(a));
+  write(dir / "observables.csv", observables_csv(a));
+  write(dir / "cells.csv", cells_csv(cells));
+  std::vector<std::string> nist_files;
+  for (const auto& v : a.variants)
+    if (!v.nist.empty()) {
+      const std::string f = "nist_" + v.nist_cell + ".txt";
+      write(dir / f, v.nist_report.empty() ? nist_final_analysis_report(v, a.alpha) : v.nist_report);
+      nist_files.push_back(f);
+    }
+  std::vector<std::string> made;
+  if (options.charts) made = write_charts(a, cells, dir / "charts", options.log);
+  const auto have = [&](const std::string& n) { return std::find(made.begin(), made.end(), n) != made.end(); };
+
+  std::size_t unstable = 0, failed = 0;
+  for (const auto& c : cells) unstable += c.status == "unstable", failed += c.status == "failed";
+
+  std::ostringstream md;
+  const std::time_t now = std::time(nullptr);
+  char when[64];
+  std::strftime(when, sizeof when, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+  md << "# Study `" << config.name << "`\n\n";
+  if (!config.description.empty()) md << config.description << "\n\n";
+  md << "- cells stored: **" << cells.size() << " of " << expected << "**"
+     << (cells.size() < expected ? " (partial: the missing cells are not in any table)" : "") << "; unstable: "
+     << unstable << "; failed: " << failed << "\n"
+     << "- scene: " << config.scene.name << ", " << config.scene.particles << " beads, ρ = " << config.scene.density
+     << ", a = " << config.scene.a << ", γ = " << config.scene.gamma << ", k_BT = " << config.scene.kT
+     << ", λ = " << config.scene.lambda << ", " << config.scene.steps << " steps (" << config.scene.equilibrate
+     << " discarded), pairs: " << config.scene.pairs << "\n"
+     << "- replicas per variant: " << config.replicas << "; reference: " << config.reference << "; α = " << a.alpha
+     << "\n- config hash `" << config.hash << "` (the config is stored in study.h5 and study.toml); generated "
+     << when << "\n\n";
+
+  md << "## Verdicts\n\n"
+     << "Each variant (generator × rounds × distribution × seeding) is compared with MT19937 run with identical "
+        "settings and the same initial states. *Indistinguishable* means no observable and no pass fraction "
+        "differs at α = "
+     << a.alpha
+     << " after a Bonferroni correction over everything compared; it is a statement about this sample size, not "
+        "a proof of equality. *Worst error / noise floor* is the largest ratio of an observable's error rate to "
+        "the MT-vs-MT noise floor (≈1 is noise; ≥3 would be visible).\n\n"
+     << summary_markdown(a) << "\n";
+  for (const auto& d : dists)
+    if (have("speed_vs_accuracy_" + d)) md << chart("speed_vs_accuracy_" + d, "speed against accuracy, " + d);
+
+  md << "## Pass fractions (the paper's Fig. 2)\n\n"
+     << "χ²: one test per tapped production step on all the step's numbers (Sturges bins), α = " << a.alpha
+     << ". Lag-1 t: one test per tapped pair on the numbers it receives over all production steps. Output words "
+        "are judged apart (a, b for two-word generators such as 64TEA). Fractions are pooled over replicas with "
+        "99 % Clopper–Pearson intervals; **bold** = inconsistent with 1 − α (exact binomial test, p < 0.01).\n\n";
+  for (const auto& d : dists) {
+    md << "### " << d << "\n\n" << pass_table_markdown(a, d) << "\n";
+    if (have("pass_vs_rounds_" + d)) md << chart("pass_vs_rounds_" + d, "pass fraction vs rounds, " + d);
+  }
+
+  md << "## Physical observables against MT\n\n"
+     << "Each cell: error rate (noise floor). Scalars (T, its fluctuation, P, D, the velocity PDF's error against "
+        "Maxwell–Boltzmann): |mean − mean_MT| / |mean_MT| over replicas; noise floor = 1σ of that difference "
+        "expected from the MT replicas' spread; P-value from Welch's t-test. Curves (velocity PDF, g(r)): mean "
+        "relative deviation of each replica from the other MT replicas' mean, against the same quantity for MT "
+        "replicas themselves (the noise floor); one-sided Welch test. **Bold** = differs at α.\n\n";
+  for (const auto& d : dists) {
+    md << "### " << d << "\n\n" << observables_markdown(a, d) << "\n";
+    for (const auto& [n, alt] : {std::pair{"temperature_vs_rounds_", "temperature vs rounds"},
+                                 std::pair{"vpdf_", "velocity PDF"}, std::pair{"msd_", "MSD"},
+                                 std::pair{"rdf_", "g(r)"}})
+      if (have(n + d)) md << chart(n + d, std::string(alt) + ", " + d);
+  }
+
+  md << "## Correlations of ζ across neighbouring pairs and consecutive steps\n\n"
+     << "A weak hash fed neighbouring inputs can pass χ² with correlated outputs. Pooled Pearson r of ζ between "
+        "the tapped couples of neighbouring pair ids and between consecutive steps of one pair; worst replica "
+        "shown; **bold** = significant after Bonferroni over replicas.\n\n"
+     << correlation_markdown(a) << "\n";
+
+  md << "## NIST SP 800-22\n\n";
+  if (nist_files.empty()) md << "(no cell of this study ran the NIST battery)\n\n";
+  for (const auto& v : a.variants)
+    if (!v.nist.empty())
+      md << "### " << v.key.label() << " " << v.key.distribution << "\n\n" << v.nist_sequences
+         << " sequences of " << config.tests.nist_bits << " bits from cell `" << v.nist_cell << "`; "
+         << v.nist_failed << " of " << v.nist_columns
+         << " P-value columns fail the reference's second-level checks (a good generator fails ~1 by chance).\n\n```\n"
+         << (v.nist_report.empty() ? nist_final_analysis_report(v, a.alpha) : v.nist_report) << "```\n\n";
+
+  md << "## Cost\n\n"
+     << "ns per number: the engine's calibration of generator + distribution in a tight loop. Step time: wall "
+        "time of the run / steps (cells ran side by side, so absolute times carry the machine's load). RNG share "
+        "= numbers per step × ns per number / force time (an estimate; `dpdrng bench dpd` measures it by "
+        "difference).\n\n"
+     << cost_markdown(a) << "\n";
+  for (const auto& d : dists) {
+    if (have("cost_vs_rounds_" + d)) md << chart("cost_vs_rounds_" + d, "cost vs rounds (paper's Fig. 1), " + d);
+    if (have("step_vs_rounds_" + d)) md << chart("step_vs_rounds_" + d, "step time vs rounds, " + d);
+  }
+
+  md << "## Unstable and failed cells\n\n";
+  if (unstable + failed == 0) md << "None.\n\n";
+  for (const auto& c : cells)
+    if (c.status != "ok")
+      md << "- `" << c.cell.id() << "`: " << c.status << (c.unstable_step >= 0 ? " at step " + std::to_string(c.unstable_step) : "")
+         << " — " << c.reason << "\n";
+  for (const auto& c : cells)
+    for (const auto& [k, v] : c.notes) md << "- `" << c.cell.id() << "` " << k << ": " << v << "\n";
+
+  md << "\n## Files\n\n"
+     << "`summary.csv`, `pass_table.csv`, `observables.csv`, `cells.csv` (every scalar of every cell)";
+  for (const auto& f : nist_files) md << ", `" << f << "`";
+  md << "; charts in `charts/` (SVG, PNG and the gnuplot script of each); all data in `../study.h5` (h5py: "
+        "`h5py.File('study.h5')['cells']`).\n";
+
+  write(dir / "report.md", md.str());
+  return dir / "report.md";
+}
+
+}  // namespace dpdrng::study

@@ -1,0 +1,228 @@
+// The report's tables, Markdown for reading and CSV for plotting elsewhere.
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "dpdrng/study/report.hpp"
+
+namespace dpdrng::study {
+namespace {
+
+std::string fmt(const char* f, double x) {
+  if (!std::isfinite(x)) return "–";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, x);
+  return buf;
+}
+
+std::string pass_cell(const PassSummary& p) {
+  if (!p.available || p.trials == 0) return "–";
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%s%.3f [%.3f, %.3f] (%zu)", p.binomial_p < 0.01 ? "**" : "", p.fraction, p.ci_low,
+                p.ci_high, p.trials);
+  std::string s = buf;
+  if (p.binomial_p < 0.01) s.insert(s.find(' '), "**");
+  return s;
+}
+
+const PassSummary* find_pass(const VariantReport& v, const std::string& test, const std::string& stream) {
+  for (const auto& p : v.passes)
+    if (p.test == test && p.stream == stream) return &p;
+  return nullptr;
+}
+
+std::vector<std::string> streams_of(const VariantReport& v) {
+  std::vector<std::string> s;
+  for (const auto& p : v.passes)
+    if (std::find(s.begin(), s.end(), p.stream) == s.end()) s.push_back(p.stream);
+  if (s.empty()) s.push_back("x");
+  return s;
+}
+
+std::string csv_quote(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+std::string num(double x) {
+  if (!std::isfinite(x)) return "";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", x);
+  return buf;
+}
+
+const char* kObservableNames[][2] = {
+    {"temperature_mean", "T"},        {"temperature_std", "T fluctuation"},
+    {"pressure_mean", "P"},           {"diffusion_coefficient", "D"},
+    {"vpdf_error_mb", "v-PDF vs MB"}, {"vpdf_vs_mt", "v-PDF vs MT"},
+    {"rdf_vs_mt", "g(r) vs MT"},
+};
+std::string pretty(const std::string& o) {
+  for (const auto& n : kObservableNames)
+    if (o == n[0]) return n[1];
+  return o;
+}
+
+}  // namespace
+
+std::string pass_table_markdown(const Analysis& a, const std::string& distribution) {
+  std::ostringstream o;
+  o << "| generator | output | χ² pass fraction [99 % CI] (steps) | lag-1 t pass fraction [99 % CI] (pairs) |\n"
+    << "|---|---|---|---|\n";
+  for (const auto& v : a.variants) {
+    if (v.key.distribution != distribution) continue;
+    for (const auto& s : streams_of(v)) {
+      const auto* c = find_pass(v, "chi2", s);
+      const auto* t = find_pass(v, "ttest", s);
+      o << "| " << v.key.label() << (v.key.reference ? "" : " " + v.key.seeding) << " | "
+        << (s == "x" ? "" : s) << " | " << (c ? pass_cell(*c) : "–") << " | " << (t ? pass_cell(*t) : "–")
+        << " |\n";
+    }
+  }
+  return o.str();
+}
+
+std::string pass_table_csv(const Analysis& a) {
+  std::ostringstream o;
+  o << "generator,rounds,distribution,seeding,dt,output,test,trials,passed,fraction,ci_low,ci_high,binomial_p\n";
+  for (const auto& v : a.variants)
+    for (const auto& p : v.passes)
+      o << v.key.generator << ',' << v.key.rounds << ',' << v.key.distribution << ',' << v.key.seeding << ','
+        << num(v.key.dt) << ',' << p.stream << ',' << p.test << ',' << p.trials << ',' << p.passed << ','
+        << num(p.fraction) << ',' << num(p.ci_low) << ',' << num(p.ci_high) << ',' << num(p.binomial_p) << '\n';
+  return o.str();
+}
+
+std::string observables_csv(const Analysis& a) {
+  std::ostringstream o;
+  o << "generator,rounds,distribution,seeding,dt,observable,replicas,value,value_sd,reference_replicas,reference,"
+       "reference_sd,error_rate,noise_floor,p_value,note\n";
+  for (const auto& v : a.variants)
+    for (const auto& c : v.observables)
+      o << v.key.generator << ',' << v.key.rounds << ',' << v.key.distribution << ',' << v.key.seeding << ','
+        << num(v.key.dt) << ',' << c.observable << ',' << c.n << ',' << num(c.value) << ',' << num(c.value_sd) << ','
+        << c.n_ref << ',' << num(c.ref) << ',' << num(c.ref_sd) << ',' << num(c.error_rate) << ','
+        << num(c.noise_floor) << ',' << num(c.p_value) << ',' << csv_quote(c.note) << '\n';
+  return o.str();
+}
+
+std::string observables_markdown(const Analysis& a, const std::string& distribution) {
+  std::ostringstream o;
+  // One column per observable: "error rate (noise floor)", bold where the P-value says it differs.
+  std::vector<std::string> names;
+  for (const auto& v : a.variants)
+    for (const auto& c : v.observables)
+      if (std::find(names.begin(), names.end(), c.observable) == names.end()) names.push_back(c.observable);
+  if (names.empty()) return "(no observable comparisons yet)\n";
+  o << "| generator |";
+  for (const auto& n : names) o << ' ' << pretty(n) << " |";
+  o << "\n|---|";
+  for (std::size_t k = 0; k < names.size(); ++k) o << "---|";
+  o << '\n';
+  for (const auto& v : a.variants) {
+    if (v.key.reference || v.key.distribution != distribution) continue;
+    o << "| " << v.key.label() << ' ' << v.key.seeding << " |";
+    for (const auto& n : names) {
+      const Comparison* c = nullptr;
+      for (const auto& x : v.observables)
+        if (x.observable == n) c = &x;
+      if (!c || !c->available) {
+        o << " – |";
+        continue;
+      }
+      const bool differs = std::isfinite(c->p_value) && c->p_value < a.alpha;
+      o << ' ' << (differs ? "**" : "") << fmt("%.2e", c->error_rate) << (differs ? "**" : "") << " ("
+        << fmt("%.1e", c->noise_floor) << ") |";
+    }
+    o << '\n';
+  }
+  return o.str();
+}
+
+std::string summary_markdown(const Analysis& a) {
+  std::ostringstream o;
+  o << "| generator | distribution | seeding | replicas | verdict | worst error / noise floor | NIST columns failed | "
+       "ns per number | step (ms) | RNG share |\n|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const auto& v : a.variants) {
+    o << "| " << v.key.label() << " | " << v.key.distribution << " | " << (v.key.reference ? "stream" : v.key.seeding)
+      << " | " << v.cells.size() << (v.broken.empty() ? "" : "+" + std::to_string(v.broken.size()) + " broken")
+      << " | " << v.verdict << " | " << fmt("%.2f", v.worst_error_over_floor) << " | "
+      << (std::isfinite(v.nist_failed) ? fmt("%.0f", v.nist_failed) + " / " + fmt("%.0f", v.nist_columns) : "–")
+      << " | " << fmt("%.2f", v.ns_per_number) << " | " << fmt("%.3f", v.step_ms) << " | "
+      << fmt("%.0f %%", 100 * v.rng_share) << " |\n";
+  }
+  return o.str();
+}
+
+std::string summary_csv(const Analysis& a) {
+  std::ostringstream o;
+  o << "generator,rounds,distribution,seeding,dt,replicas,broken,verdict,min_p,min_p_what,worst_error_over_floor,"
+       "nist_failed_columns,nist_columns,ns_per_number,step_ms,rng_share\n";
+  for (const auto& v : a.variants)
+    o << v.key.generator << ',' << v.key.rounds << ',' << v.key.distribution << ','
+      << (v.key.reference ? "stream" : v.key.seeding) << ',' << num(v.key.dt) << ',' << v.cells.size() << ','
+      << v.broken.size() << ',' << csv_quote(v.verdict) << ',' << num(v.min_p) << ',' << csv_quote(v.min_p_what)
+      << ',' << num(v.worst_error_over_floor) << ',' << num(v.nist_failed) << ',' << num(v.nist_columns) << ','
+      << num(v.ns_per_number) << ',' << num(v.step_ms) << ','
+      << num(v.rng_share) << '\n';
+  return o.str();
+}
+
+std::string cost_markdown(const Analysis& a) {
+  std::ostringstream o;
+  o << "| generator | distribution | ns per number | step (ms) | RNG share of the step | run time vs 8 rounds |\n"
+       "|---|---|---|---|---|---|\n";
+  for (const auto& v : a.variants) {
+    double at8 = NAN;
+    for (const auto& w : a.variants)
+      if (w.key.generator == v.key.generator && w.key.rounds == 8 && w.key.distribution == v.key.distribution &&
+          w.key.seeding == v.key.seeding && w.key.dt == v.key.dt)
+        at8 = w.step_ms;
+    o << "| " << v.key.label() << " | " << v.key.distribution << " | " << fmt("%.2f", v.ns_per_number) << " | "
+      << fmt("%.3f", v.step_ms) << " | " << fmt("%.0f %%", 100 * v.rng_share) << " | "
+      << (std::isfinite(at8) ? fmt("%.2f×", at8 / v.step_ms) + " faster" : "–") << " |\n";
+  }
+  return o.str();
+}
+
+std::string nist_final_analysis_report(const VariantReport& v, double alpha) {
+  std::ostringstream o;
+  const char* rule = "------------------------------------------------------------------------------\n";
+  o << rule << "RESULTS FOR THE UNIFORMITY OF P-VALUES AND THE PROPORTION OF PASSING SEQUENCES\n" << rule
+    << "   generator is <" << v.key.label() << " " << v.key.distribution << ", cell " << v.nist_cell << ">\n"
+    << rule << " C1  C2  C3  C4  C5  C6  C7  C8  C9 C10  P-VALUE  PROPORTION  STATISTICAL TEST\n" << rule;
+  std::size_t fail_prop = 0, fail_unif = 0;
+  double max_m = 0;
+  for (const auto& r : v.nist) {
+    char line[160];
+    int at = 0;
+    for (double c : r.histogram) at += std::snprintf(line + at, sizeof line - std::size_t(at), "%3.0f ", c);
+    std::string p = r.applicable > 0 ? fmt("%.6f", r.p_uniformity) : "   ----";
+    if (r.applicable > 0 && !r.uniformity_ok) p += " *";
+    else p += "  ";
+    char prop[32];
+    std::snprintf(prop, sizeof prop, "%4.0f/%-4.0f%s", r.passed, r.applicable,
+                  r.applicable > 0 && !r.proportion_ok ? " *" : "  ");
+    o << line << ' ' << p << "  " << prop << "   " << r.test
+      << (r.variant.empty() || r.variant == "-" ? "" : " " + r.variant) << '\n';
+    fail_prop += r.applicable > 0 && !r.proportion_ok;
+    fail_unif += r.applicable > 0 && !r.uniformity_ok;
+    max_m = std::max(max_m, r.applicable);
+  }
+  o << "\n\n" << rule
+    << "The minimum pass rate for each statistical test with the exception of the\n"
+       "random excursion (variant) test is approximately = "
+    << fmt("%.6f", (1 - alpha) - 3 * std::sqrt(alpha * (1 - alpha) / std::max(1.0, max_m))) << " for a\n"
+    << "sample size = " << max_m << " binary sequences.\n\n"
+    << "The minimum pass rate for the random excursion (variant) test is computed from\n"
+       "the number of sequences with enough cycles (the PROPORTION denominator).\n\n"
+    << "For further guidelines construct a probability table using the MAPLE program\n"
+       "provided in the addendum section of the documentation.\n"
+    << rule << "Summary: " << fail_prop << " of " << v.nist.size()
+    << " P-value series fail the proportion bound, " << fail_unif << " fail the uniformity test (P_T < 0.0001).\n";
+  return o.str();
+}
+
+}  // namespace dpdrng::study

@@ -1,0 +1,103 @@
+#include "dpdrng/study/runner.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <mutex>
+#include <ostream>
+#include <thread>
+
+namespace dpdrng::study {
+namespace {
+
+std::string format_duration(double s) {
+  char buf[32];
+  if (s < 60)
+    std::snprintf(buf, sizeof buf, "%.0fs", s);
+  else if (s < 3600)
+    std::snprintf(buf, sizeof buf, "%dm%02ds", int(s) / 60, int(s) % 60);
+  else
+    std::snprintf(buf, sizeof buf, "%dh%02dm", int(s) / 3600, (int(s) % 3600) / 60);
+  return buf;
+}
+
+}  // namespace
+
+RunSummary run_study(const StudyConfig& config, Store& store, const RunOptions& options, const MeasureFn& measure) {
+  using clock = std::chrono::steady_clock;
+  const auto t0 = clock::now();
+  const std::vector<Cell> cells = select_shard(enumerate_cells(config), options.shard);
+  RunSummary sum;
+  sum.cells = cells.size();
+
+  std::vector<Cell> todo;
+  for (const auto& c : cells) {
+    if (store.has(c))
+      ++sum.resumed;
+    else
+      todo.push_back(c);
+  }
+  if (options.progress && sum.resumed > 0)
+    *options.progress << "[study] " << sum.resumed << " of " << sum.cells << " cells already stored: resuming\n";
+
+  // More workers than cells would only idle; a lone cell gets the whole thread budget for its own loops.
+  const int workers = std::max(1, std::min<int>(options.threads, static_cast<int>(todo.size())));
+  const int inner_threads = std::max(1, options.threads / workers);
+  std::atomic<std::size_t> next{0};
+  std::mutex mu;  // guards sum and the progress stream
+  double busy_seconds = 0;
+  std::exception_ptr store_error;
+
+  auto worker = [&] {
+    for (;;) {
+      const std::size_t k = next.fetch_add(1);
+      if (k >= todo.size()) return;
+      const Cell& cell = todo[k];
+      const auto c0 = clock::now();
+      CellResult r;
+      try {
+        r = measure(cell, config, inner_threads);
+      } catch (const std::exception& e) {
+        // One broken cell must not stop the sweep: it is stored as failed, with the reason.
+        r = CellResult{};
+        r.status = "failed";
+        r.reason = e.what();
+      }
+      r.cell = cell;
+      r.seconds = std::chrono::duration<double>(clock::now() - c0).count();
+      try {
+        store.save(r);
+      } catch (...) {
+        std::lock_guard lk(mu);
+        if (!store_error) store_error = std::current_exception();
+        next = todo.size();  // a store that cannot be written is fatal: stop handing out cells
+        return;
+      }
+      std::lock_guard lk(mu);
+      ++sum.computed;
+      if (r.status == "unstable") ++sum.unstable;
+      if (r.status == "failed") ++sum.failed;
+      busy_seconds += r.seconds;
+      if (options.progress) {
+        const std::size_t done = sum.resumed + sum.computed;
+        const double per_cell = busy_seconds / double(sum.computed);
+        const double eta = per_cell * double(todo.size() - sum.computed) / workers;
+        char line[256];
+        std::snprintf(line, sizeof line, "[study] %zu/%zu cells  %-10s %-7s %-9s rep%-2d %6.1fs  %s%s  ETA %s\n",
+                      done, sum.cells, cell.label().c_str(), cell.distribution.c_str(), cell.seeding.c_str(),
+                      cell.replica, r.seconds, r.status.c_str(),
+                      r.status == "ok" ? "" : (" (" + r.reason + ")").c_str(), format_duration(eta).c_str());
+        *options.progress << line << std::flush;
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int w = 1; w < workers; ++w) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+  if (store_error) std::rethrow_exception(store_error);
+  sum.seconds = std::chrono::duration<double>(clock::now() - t0).count();
+  return sum;
+}
+
+}  // namespace dpdrng::study

@@ -1,0 +1,197 @@
+#include "dpdrng/study/store.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+#include "dpdrng/common/error.hpp"
+
+namespace dpdrng::study {
+namespace fs = std::filesystem;
+namespace {
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) throw InputError(p.string() + ": cannot read");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Data first, then the rename: after a crash the name points at a complete file or at nothing.
+void sync_file(const fs::path& p) {
+  const int fd = ::open(p.c_str(), O_RDONLY);
+  if (fd < 0) throw std::runtime_error("cannot open " + p.string() + " to sync it");
+  const int rc = ::fsync(fd);
+  ::close(fd);
+  if (rc != 0) throw std::runtime_error("fsync " + p.string() + " failed");
+}
+
+fs::path temp_name(const fs::path& p) {
+  return p.parent_path() / ("." + p.filename().string() + ".tmp" + std::to_string(::getpid()));
+}
+
+}  // namespace
+
+void write_file_atomically(const fs::path& path, const std::string& text) {
+  const fs::path tmp = temp_name(path);
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    out << text;
+    if (!out.flush()) throw std::runtime_error("cannot write " + tmp.string());
+  }
+  sync_file(tmp);
+  fs::rename(tmp, path);
+}
+
+fs::path Store::cell_path(const Cell& cell) const { return dir_ / "cells" / (cell.id() + ".h5"); }
+
+std::string Store::stored_hash() const {
+  const fs::path p = dir_ / "config.hash";
+  if (!fs::exists(p)) return "";
+  std::string h = read_text(p);
+  while (!h.empty() && (h.back() == '\n' || h.back() == ' ')) h.pop_back();
+  return h;
+}
+
+void Store::open_for(const StudyConfig& config) {
+  const std::string existing = stored_hash();
+  if (!existing.empty() && existing != config.hash)
+    throw InputError(dir_.string() + " holds results of a different config (hash " + existing + ", this config " +
+                     config.hash + "): choose another --out, or delete the directory to start afresh");
+  fs::create_directories(dir_ / "cells");
+  if (existing.empty()) {
+    write_file_atomically(dir_ / "study.toml", config.source_text);
+    write_file_atomically(dir_ / "config.hash", config.hash + "\n");
+  }
+}
+
+StudyConfig Store::stored_config() const {
+  const fs::path p = dir_ / "study.toml";
+  if (!fs::exists(p)) throw InputError(dir_.string() + " is not a study directory (no study.toml)");
+  StudyConfig c = parse_config(read_text(p), p.string());
+  const std::string h = stored_hash();
+  if (!h.empty() && h != c.hash)
+    throw InputError(p.string() + " does not match " + (dir_ / "config.hash").string() +
+                     " (edited after the run?)");
+  return c;
+}
+
+bool Store::has(const Cell& cell) const {
+  const fs::path p = cell_path(cell);
+  if (!fs::exists(p)) return false;
+  // A file that exists but cannot be read (truncated by hand, a full disk) counts as missing: recompute it.
+  try {
+    std::lock_guard lk(h5::lock());
+    h5::Handle f = h5::open_file(p.string());
+    const auto attrs = h5::read_attributes(f.id());
+    auto it = attrs.find("config_hash");
+    return it != attrs.end() && std::get_if<std::string>(&it->second) && h5::exists(f.id(), "cell");
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+void Store::save(const CellResult& r) {
+  const fs::path p = cell_path(r.cell);
+  const fs::path tmp = temp_name(p);
+  {
+    std::lock_guard lk(h5::lock());
+    h5::Handle f = h5::create_file(tmp.string());
+    h5::write_attribute(f.id(), "config_hash", stored_hash());
+    h5::Handle g = h5::create_group(f.id(), "cell");
+    write_cell(g.id(), r);
+  }
+  sync_file(tmp);
+  fs::rename(tmp, p);
+}
+
+CellResult Store::load(const Cell& cell) const {
+  std::lock_guard lk(h5::lock());
+  h5::Handle f = h5::open_file(cell_path(cell).string());
+  h5::Handle g = h5::open_group(f.id(), "cell");
+  return read_cell(g.id());
+}
+
+std::vector<CellResult> Store::load_all() const {
+  std::vector<fs::path> files;
+  if (fs::exists(dir_ / "cells"))
+    for (const auto& e : fs::directory_iterator(dir_ / "cells"))
+      if (e.path().extension() == ".h5" && e.path().filename().string()[0] != '.') files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  std::vector<CellResult> out;
+  std::lock_guard lk(h5::lock());
+  for (const auto& p : files) {
+    try {
+      h5::Handle f = h5::open_file(p.string());
+      h5::Handle g = h5::open_group(f.id(), "cell");
+      out.push_back(read_cell(g.id()));
+    } catch (const std::exception&) {
+      // Unreadable leftovers are skipped here; `study run` recomputes them.
+    }
+  }
+  return out;
+}
+
+std::size_t Store::assemble(const StudyConfig& config) const {
+  std::vector<fs::path> files;
+  if (fs::exists(dir_ / "cells"))
+    for (const auto& e : fs::directory_iterator(dir_ / "cells"))
+      if (e.path().extension() == ".h5" && e.path().filename().string()[0] != '.') files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  const fs::path out = study_file();
+  const fs::path tmp = dir_ / ("study.h5.tmp" + std::to_string(::getpid()));
+  std::size_t n = 0;
+  {
+    std::lock_guard lk(h5::lock());
+    h5::Handle dst = h5::create_file(tmp.string());
+    h5::write_attribute(dst.id(), "study", config.name);
+    h5::write_attribute(dst.id(), "description", config.description);
+    h5::write_attribute(dst.id(), "config_toml", config.source_text);
+    h5::write_attribute(dst.id(), "config_canonical_json", config.canonical().dump());
+    h5::write_attribute(dst.id(), "config_hash", config.hash);
+    h5::write_attribute(dst.id(), "dpdrng_version", std::string(DPDRNG_VERSION));
+    h5::Handle cells = h5::create_group(dst.id(), "cells");
+    for (const auto& p : files) {
+      try {
+        h5::Handle src = h5::open_file(p.string());
+        const auto attrs = h5::read_attributes(src.id());
+        auto it = attrs.find("config_hash");
+        if (it == attrs.end() || std::get<std::string>(it->second) != config.hash) continue;
+        h5::copy(src.id(), "cell", cells.id(), p.stem().string());
+        ++n;
+      } catch (const std::exception&) {
+        continue;  // unreadable: not part of the store
+      }
+    }
+    h5::write_attribute(dst.id(), "cells_stored", static_cast<std::int64_t>(n));
+  }
+  sync_file(tmp);
+  fs::rename(tmp, out);
+  return n;
+}
+
+std::size_t Store::merge_from(const Store& other) {
+  if (other.stored_hash() != stored_hash())
+    throw InputError(other.dir().string() + " was made with a different config than " + dir_.string() +
+                     " (hash " + other.stored_hash() + " vs " + stored_hash() + ")");
+  std::size_t n = 0;
+  if (!fs::exists(other.dir() / "cells")) return 0;
+  for (const auto& e : fs::directory_iterator(other.dir() / "cells")) {
+    const fs::path& src = e.path();
+    if (src.extension() != ".h5" || src.filename().string()[0] == '.') continue;
+    const fs::path dst = dir_ / "cells" / src.filename();
+    if (fs::exists(dst)) continue;
+    const fs::path tmp = temp_name(dst);
+    fs::copy_file(src, tmp, fs::copy_options::overwrite_existing);
+    sync_file(tmp);
+    fs::rename(tmp, dst);
+    ++n;
+  }
+  return n;
+}
+
+}  // namespace dpdrng::study

@@ -1,0 +1,84 @@
+#include "dpdrng/study/sweep.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "dpdrng/common/error.hpp"
+#include "dpdrng/rng/registry.hpp"
+#include "dpdrng/rng/splitmix.hpp"
+
+namespace dpdrng::study {
+
+std::string Cell::id() const {
+  char buf[160];
+  if (reference)
+    std::snprintf(buf, sizeof buf, "%s-%s-dt%g-rep%02d", generator.c_str(), distribution.c_str(), dt, replica);
+  else
+    std::snprintf(buf, sizeof buf, "%s-r%02d-%s-%s-dt%g-rep%02d", generator.c_str(), rounds, distribution.c_str(),
+                  seeding.c_str(), dt, replica);
+  return buf;
+}
+
+std::string Cell::label() const {
+  if (reference) return generator;
+  return rng::describe(rng::GeneratorSpec{generator, rounds, rng::kPaperTeaKey});
+}
+
+std::vector<Cell> enumerate_cells(const StudyConfig& config) {
+  std::vector<Cell> cells;
+  const auto wants_nist = [&](const std::string& gen, const std::string& dist, int replica) {
+    const auto& t = config.tests;
+    return std::find(t.nist_generators.begin(), t.nist_generators.end(), gen) != t.nist_generators.end() &&
+           std::find(t.nist_distributions.begin(), t.nist_distributions.end(), dist) != t.nist_distributions.end() &&
+           replica < t.nist_replicas;
+  };
+  for (double dt : config.scene.dt)
+    for (int rep = 0; rep < config.replicas; ++rep) {
+      // A replica's seed sets the initial state (and the reference's stream); distinct per replica, shared
+      // across generators.
+      const std::uint64_t seed = rng::splitmix64_mix(config.seed * 0x9e3779b97f4a7c15ull + std::uint64_t(rep));
+      for (const auto& dist : config.distributions) {
+        Cell ref;
+        ref.generator = config.reference;
+        ref.rounds = 1;
+        ref.distribution = dist;
+        ref.seeding = "stream";
+        ref.dt = dt;
+        ref.replica = rep;
+        ref.reference = true;
+        ref.seed = seed;
+        ref.nist = wants_nist(ref.generator, dist, rep);
+        cells.push_back(ref);
+        for (const auto& g : config.generators)
+          for (const auto& seeding : g.seedings.empty() ? config.seedings : g.seedings)
+            for (int r : g.rounds) {
+              Cell c = ref;
+              c.generator = g.name;
+              c.rounds = r;
+              c.seeding = seeding;
+              c.reference = false;
+              c.nist = wants_nist(g.name, dist, rep);
+              cells.push_back(c);
+            }
+      }
+    }
+  return cells;
+}
+
+Shard parse_shard(const std::string& text) {
+  Shard s;
+  int used = 0;
+  if (std::sscanf(text.c_str(), "%d/%d%n", &s.index, &s.count, &used) != 2 || used != int(text.size()) ||
+      s.count < 1 || s.index < 1 || s.index > s.count)
+    throw InputError("--shard: '" + text + "' is not k/N with 1 <= k <= N");
+  return s;
+}
+
+std::vector<Cell> select_shard(const std::vector<Cell>& cells, Shard shard) {
+  std::vector<Cell> out;
+  for (std::size_t i = 0; i < cells.size(); ++i)
+    if (static_cast<int>(i % std::size_t(shard.count)) == shard.index - 1) out.push_back(cells[i]);
+  return out;
+}
+
+}  // namespace dpdrng::study

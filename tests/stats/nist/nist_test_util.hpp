@@ -1,0 +1,50 @@
+#pragma once
+// Shared by the SP800-22 tests: the Appendix B data sets, built with MPFR instead of shipping data files.
+#include <gsl/gsl_errno.h>
+#include <mpfr.h>
+
+#include <cstdlib>
+#include <string>
+#include <string_view>
+
+#include "dpdrng/stats/nist/bitseq.hpp"
+
+namespace dpdrng::stats::nist::testing_ {
+
+enum class Constant { e, pi, sqrt2, sqrt3 };
+
+// The first n binary digits of the constant, integer part included, as in the reference's data/data.e,
+// data.pi, data.sqrt2, data.sqrt3 (data.pi starts 11001001..., data.e 10101101...).
+inline BitSequence binary_expansion(Constant c, std::size_t n = 1000000) {
+  mpfr_t x;
+  mpfr_init2(x, static_cast<mpfr_prec_t>(n + 64));
+  switch (c) {
+    case Constant::e: mpfr_set_ui(x, 1, MPFR_RNDN), mpfr_exp(x, x, MPFR_RNDN); break;
+    case Constant::pi: mpfr_const_pi(x, MPFR_RNDN); break;
+    case Constant::sqrt2: mpfr_sqrt_ui(x, 2, MPFR_RNDN); break;
+    case Constant::sqrt3: mpfr_sqrt_ui(x, 3, MPFR_RNDN); break;
+  }
+  mpfr_exp_t exponent;
+  char* digits = mpfr_get_str(nullptr, &exponent, 2, n + 8, x, MPFR_RNDZ);
+  BitSequence s = BitSequence::from_ascii(std::string_view(digits, n));
+  mpfr_free_str(digits);
+  mpfr_clear(x);
+  return s;
+}
+
+inline const BitSequence& cached_expansion(Constant c) {
+  static const BitSequence seqs[4] = {binary_expansion(Constant::e), binary_expansion(Constant::pi),
+                                      binary_expansion(Constant::sqrt2), binary_expansion(Constant::sqrt3)};
+  return seqs[static_cast<int>(c)];
+}
+
+// DPDRNG_TEST_SCALE=small (the sanitizer run) shrinks the expensive tests.
+inline bool small_scale() {
+  const char* v = std::getenv("DPDRNG_TEST_SCALE");
+  return v && std::string_view(v) == "small";
+}
+
+// GSL's default handler aborts; the library checks every status itself.
+inline const bool kGslHandlerOff = (gsl_set_error_handler_off(), true);
+
+}  // namespace dpdrng::stats::nist::testing_

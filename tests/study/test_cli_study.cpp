@@ -1,0 +1,189 @@
+// `dpdrng study` as a user meets it: bad configs change nothing on disk, and a run killed at a random moment
+// resumes to the same store as an uninterrupted run, without recomputing the cells it had finished.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <thread>
+
+#include "dpdrng/study/store.hpp"
+
+using namespace dpdrng::study;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    std::string tmpl = (fs::temp_directory_path() / "dpdrng-cli-study-XXXXXX").string();
+    path = mkdtemp(tmpl.data());
+  }
+  ~TempDir() { fs::remove_all(path); }
+};
+
+// A real (engine-backed) study small enough for a unit test.
+const std::string kTiny = R"(
+[study]
+name = "tiny"
+replicas = 3
+[sweep]
+distributions = ["gauss"]
+[[sweep.generator]]
+name = "tea32"
+rounds = [1, 8]
+[scene]
+particles = 24
+steps = 240
+equilibrate = 40
+[tests]
+chi2_steps = 4
+ttest_pairs = 4
+nist_sequences = 2
+nist_bits = 65536
+nist_generators = ["tea32"]
+)";
+
+int run_cli(const std::string& args, std::string* err = nullptr, const fs::path& err_file = {}) {
+  const fs::path e = err_file.empty() ? fs::temp_directory_path() / ("dpdrng-cli-err-" + std::to_string(getpid())) : err_file;
+  const std::string cmd = std::string(DPDRNG_CLI_PATH) + " " + args + " >/dev/null 2>'" + e.string() + "'";
+  const int rc = std::system(cmd.c_str());
+  if (err) {
+    std::ifstream in(e);
+    *err = std::string(std::istreambuf_iterator<char>(in), {});
+  }
+  fs::remove(e);
+  return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+}
+
+void write(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
+
+// A cell's physics and test results; timings differ from run to run and are left out.
+std::string fingerprint(const CellResult& r) {
+  std::string s = r.cell.id() + "|" + r.status;
+  for (const auto& [k, v] : r.scalars)
+    if (k.rfind("cost.", 0) != 0) s += "|" + k + "=" + std::to_string(v);
+  for (const auto& [k, v] : r.series) {
+    s += "|" + k + ":";
+    for (double x : v) s += std::to_string(x) + ",";
+  }
+  return s;
+}
+
+std::map<std::string, std::string> fingerprints(const fs::path& dir) {
+  std::map<std::string, std::string> out;
+  for (const auto& c : Store(dir).load_all()) out[c.cell.id()] = fingerprint(c);
+  return out;
+}
+
+std::vector<fs::path> cell_files(const fs::path& dir) {
+  std::vector<fs::path> out;
+  if (!fs::exists(dir / "cells")) return out;
+  for (const auto& e : fs::directory_iterator(dir / "cells"))
+    if (e.path().extension() == ".h5" && e.path().filename().string()[0] != '.') out.push_back(e.path());
+  return out;
+}
+
+}  // namespace
+
+TEST(StudyCli, BadConfigExitsTwoAndWritesNothing) {
+  TempDir tmp;
+  std::string bad = kTiny;
+  bad.replace(bad.find("particles = 24"), 14, "particles = 24\ngama = 4.5");
+  write(tmp.path / "bad.toml", bad);
+  std::string err;
+  EXPECT_EQ(run_cli("study run '" + (tmp.path / "bad.toml").string() + "' --out '" + (tmp.path / "out").string() + "'",
+                    &err),
+            2);
+  EXPECT_NE(err.find("scene.gama: unknown key"), std::string::npos) << err;
+  EXPECT_FALSE(fs::exists(tmp.path / "out"));
+
+  write(tmp.path / "nan.toml", [] {
+    std::string s = kTiny;
+    return s.replace(s.find("particles = 24"), 14, "particles = 24\ndt = nan");
+  }());
+  EXPECT_EQ(run_cli("study run '" + (tmp.path / "nan.toml").string() + "' --out '" + (tmp.path / "out").string() + "'",
+                    &err),
+            2);
+  EXPECT_NE(err.find("scene.dt"), std::string::npos) << err;
+  EXPECT_FALSE(fs::exists(tmp.path / "out"));
+  EXPECT_EQ(run_cli("study run '" + (tmp.path / "missing.toml").string() + "'", &err), 2);
+  EXPECT_EQ(run_cli("study run '" + (tmp.path / "bad.toml").string() + "' --shard 3/2", &err), 2);
+}
+
+TEST(StudyCli, KilledRunResumesToTheUninterruptedResult) {
+  TempDir tmp;
+  write(tmp.path / "tiny.toml", kTiny);
+  const std::string cfg = "'" + (tmp.path / "tiny.toml").string() + "'";
+  const fs::path whole = tmp.path / "whole", killed = tmp.path / "killed";
+  ASSERT_EQ(run_cli("study run " + cfg + " --threads 2 --out '" + whole.string() + "'"), 0);
+  const auto expected = fingerprints(whole);
+  ASSERT_EQ(expected.size(), 9u);  // 3 replicas × (mt19937, tea32(1), tea32(8))
+
+  // Start the run and kill it (SIGKILL: no chance to clean up) once it has finished some cells.
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    execl(DPDRNG_CLI_PATH, DPDRNG_CLI_PATH, "study", "run", (tmp.path / "tiny.toml").c_str(), "--threads", "1",
+          "--out", killed.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  while (cell_files(killed).size() < 3 && std::chrono::steady_clock::now() - t0 < std::chrono::seconds(120))
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  kill(pid, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  auto finished = cell_files(killed);
+  ASSERT_GE(finished.size(), 3u);
+  // If the run won the race and finished, take cells away as an interruption would have left them.
+  while (finished.size() > 5) {
+    fs::remove(finished.back());
+    finished.pop_back();
+  }
+  std::map<fs::path, std::pair<ino_t, long>> before;
+  for (const auto& f : finished) {
+    struct stat st {};
+    ASSERT_EQ(stat(f.c_str(), &st), 0);
+    before[f] = {st.st_ino, st.st_mtim.tv_nsec + 1'000'000'000L * (st.st_mtim.tv_sec % 1000)};
+  }
+
+  std::string err;
+  ASSERT_EQ(run_cli("study run " + cfg + " --threads 2 --out '" + killed.string() + "'", &err), 0) << err;
+  EXPECT_NE(err.find("already stored: resuming"), std::string::npos) << err;
+  for (const auto& [f, id] : before) {
+    struct stat st {};
+    ASSERT_EQ(stat(f.c_str(), &st), 0) << f;
+    EXPECT_EQ(st.st_ino, id.first) << f << " was recomputed";
+    EXPECT_EQ(st.st_mtim.tv_nsec + 1'000'000'000L * (st.st_mtim.tv_sec % 1000), id.second) << f << " was rewritten";
+  }
+  EXPECT_EQ(fingerprints(killed), expected);
+  EXPECT_TRUE(fs::exists(killed / "study.h5"));
+
+  // The report of the resumed store is complete.
+  ASSERT_EQ(run_cli("study report --no-charts '" + killed.string() + "'", &err), 0) << err;
+  std::ifstream md(killed / "report" / "report.md");
+  const std::string text(std::istreambuf_iterator<char>(md), {});
+  EXPECT_NE(text.find("cells stored: **9 of 9**"), std::string::npos);
+}
+
+TEST(StudyCli, ShardsRunApartMergeIntoOneStore) {
+  TempDir tmp;
+  write(tmp.path / "tiny.toml", kTiny);
+  const std::string cfg = "'" + (tmp.path / "tiny.toml").string() + "'";
+  const fs::path a = tmp.path / "a", b = tmp.path / "b", whole = tmp.path / "whole";
+  ASSERT_EQ(run_cli("study run " + cfg + " --shard 1/2 --out '" + a.string() + "'"), 0);
+  ASSERT_EQ(run_cli("study run " + cfg + " --shard 2/2 --out '" + b.string() + "'"), 0);
+  EXPECT_LT(cell_files(a).size(), 9u);
+  std::string err;
+  ASSERT_EQ(run_cli("study merge '" + a.string() + "' '" + b.string() + "'", &err), 0) << err;
+  ASSERT_EQ(run_cli("study run " + cfg + " --out '" + whole.string() + "'"), 0);
+  EXPECT_EQ(fingerprints(a), fingerprints(whole));
+}

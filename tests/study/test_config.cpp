@@ -1,0 +1,125 @@
+// Study configs: every shipped config parses, and every kind of mistake names its key.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "dpdrng/common/error.hpp"
+#include "dpdrng/study/config.hpp"
+#include "dpdrng/study/sweep.hpp"
+
+using namespace dpdrng::study;
+
+namespace {
+
+const std::string kMinimal = R"(
+[study]
+name = "t"
+replicas = 2
+[sweep]
+distributions = ["gauss"]
+[[sweep.generator]]
+name = "tea32"
+rounds = [1, 8]
+[scene]
+particles = 32
+steps = 100
+equilibrate = 10
+[tests]
+ttest_pairs = 4
+)";
+
+// The message of the InputError that parsing `text` throws, or "" if it parses.
+std::string error_of(const std::string& text) {
+  try {
+    parse_config(text, "cfg.toml");
+  } catch (const dpdrng::InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string with(const std::string& base, const std::string& from, const std::string& to) {
+  std::string s = base;
+  const auto at = s.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return s.replace(at, from.size(), to);
+}
+
+}  // namespace
+
+TEST(StudyConfig, MinimalParsesWithDefaults) {
+  const StudyConfig c = parse_config(kMinimal, "cfg.toml");
+  EXPECT_EQ(c.name, "t");
+  EXPECT_EQ(c.reference, "mt19937");
+  ASSERT_EQ(c.generators.size(), 1u);
+  EXPECT_EQ(c.generators[0].rounds, (std::vector<int>{1, 8}));
+  EXPECT_DOUBLE_EQ(c.scene.density, 3.0);
+  EXPECT_EQ(c.scene.dt, std::vector<double>{0.04});
+  EXPECT_EQ(c.hash.size(), 16u);
+}
+
+TEST(StudyConfig, HashIgnoresCommentsAndLayoutButNotValues) {
+  const StudyConfig a = parse_config(kMinimal, "a");
+  const StudyConfig b = parse_config("# a comment\n" + kMinimal + "\n\n", "b");
+  const StudyConfig c = parse_config(with(kMinimal, "replicas = 2", "replicas = 3"), "c");
+  EXPECT_EQ(a.hash, b.hash);
+  EXPECT_NE(a.hash, c.hash);
+}
+
+TEST(StudyConfig, ErrorsNameTheKey) {
+  EXPECT_NE(error_of(with(kMinimal, "replicas = 2", "replicas = 2\nreplica = 3")).find("replica: unknown key"),
+            std::string::npos);
+  EXPECT_NE(error_of(with(kMinimal, "steps = 100", "steps = 100\ndensty = 3.0")).find("scene.densty: unknown key"),
+            std::string::npos);
+  EXPECT_NE(error_of(with(kMinimal, "particles = 32", "particles = 32\ndensity = nan")).find("scene.density"),
+            std::string::npos);
+  EXPECT_NE(error_of(with(kMinimal, "particles = 32", "particles = 32\ndt = -0.01")).find("scene.dt: out of range"),
+            std::string::npos);
+  EXPECT_NE(error_of(with(kMinimal, "particles = 32", "particles = 32\ndt = inf")).find("scene.dt: must be finite"),
+            std::string::npos);
+  EXPECT_NE(error_of(with(kMinimal, "rounds = [1, 8]", "rounds = [0]")).find("sweep.generator[0].rounds"),
+            std::string::npos);
+  EXPECT_NE(error_of(with(kMinimal, "name = \"tea32\"", "name = \"tea33\"")).find("sweep.generator[0].name"),
+            std::string::npos);
+  EXPECT_NE(error_of(with(kMinimal, "name = \"tea32\"", "name = \"mt19937\"")).find("not a pair-keyed hash"),
+            std::string::npos);
+  EXPECT_NE(error_of(with(kMinimal, "[\"gauss\"]", "[\"gauss\", \"gauss\"]")).find("sweep.distributions"),
+            std::string::npos);
+  EXPECT_NE(error_of(with(kMinimal, "[\"gauss\"]", "[\"normal\"]")).find("sweep.distributions"), std::string::npos);
+  EXPECT_NE(error_of(with(kMinimal, "equilibrate = 10", "equilibrate = 100")).find("scene.equilibrate"),
+            std::string::npos);
+  EXPECT_NE(error_of(with(kMinimal, "ttest_pairs = 4", "ttest_pairs = 4\nnist_generators = [\"philox4x32\"]"))
+                .find("tests.nist_generators"),
+            std::string::npos);
+  EXPECT_NE(error_of(with(kMinimal, "ttest_pairs = 4", "nist_bits = 100")).find("tests.nist_bits"), std::string::npos);
+  EXPECT_NE(error_of(with(kMinimal, "name = \"t\"", "name = \"../x\"")).find("study.name"), std::string::npos);
+  EXPECT_NE(error_of(with(kMinimal, "replicas = 2", "replicas = \"2\"")).find("study.replicas: must be an integer"),
+            std::string::npos);
+  EXPECT_NE(error_of("[study\nname = 1").find("cfg.toml:1"), std::string::npos);
+}
+
+TEST(StudyConfig, ShippedConfigsParse) {
+  for (const char* name : {"okada2021", "ci", "peers"}) {
+    const std::string path = std::string(DPDRNG_SOURCE_DIR) + "/study/" + name + ".toml";
+    StudyConfig c;
+    ASSERT_NO_THROW(c = load_config(path)) << path;
+    EXPECT_EQ(c.name, name);
+    EXPECT_FALSE(enumerate_cells(c).empty());
+  }
+}
+
+TEST(StudyConfig, PaperStudyCoversBothTeaFamiliesAtAllRounds) {
+  const StudyConfig c = load_config(std::string(DPDRNG_SOURCE_DIR) + "/study/okada2021.toml");
+  const std::vector<int> rounds{1, 2, 3, 4, 5, 6, 8, 16, 32};
+  ASSERT_EQ(c.generators.size(), 2u);
+  for (const auto& g : c.generators) EXPECT_EQ(g.rounds, rounds) << g.name;
+  EXPECT_EQ(c.distributions, (std::vector<std::string>{"gauss", "uniform"}));
+  EXPECT_EQ(c.scene.steps, 10000);
+  EXPECT_EQ(c.scene.equilibrate, 500);
+  EXPECT_EQ(c.tests.nist_sequences, 1000);
+  EXPECT_EQ(c.tests.nist_bits, 1 << 20);
+  std::size_t nist_tea32 = 0;
+  for (const auto& cell : enumerate_cells(c)) nist_tea32 += cell.nist && cell.generator == "tea32";
+  EXPECT_EQ(nist_tea32, rounds.size());  // every 32TEA variant, once
+}

@@ -1,0 +1,239 @@
+// The results store: records round-trip, interrupted runs resume without recomputing finished cells, shards
+// merge into what one run gives, and a store refuses cells of another config.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "dpdrng/common/error.hpp"
+#include "dpdrng/study/runner.hpp"
+#include "dpdrng/study/store.hpp"
+#include "fake_measure.hpp"
+
+using namespace dpdrng::study;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kConfig = R"(
+[study]
+name = "store-test"
+replicas = 3
+[sweep]
+distributions = ["gauss"]
+[[sweep.generator]]
+name = "tea32"
+rounds = [1, 8]
+[[sweep.generator]]
+name = "tea64"
+rounds = [1]
+[scene]
+particles = 16
+steps = 20
+equilibrate = 2
+[tests]
+ttest_pairs = 2
+)";
+
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    std::string tmpl = (fs::temp_directory_path() / "dpdrng-study-XXXXXX").string();
+    path = mkdtemp(tmpl.data());
+  }
+  ~TempDir() { fs::remove_all(path); }
+};
+
+MeasureFn as_fn(fake::FakeMeasure& f) {
+  return [&f](const Cell& c, const StudyConfig& cfg, int t) { return f(c, cfg, t); };
+}
+
+// Everything a cell holds, as text: two stores are equal when these agree for every cell.
+std::string fingerprint(const CellResult& r) {
+  std::string s = r.cell.id() + "|" + r.status + "|" + r.reason;
+  for (const auto& [k, v] : r.scalars) s += "|" + k + "=" + std::to_string(v);
+  for (const auto& [k, v] : r.series) {
+    s += "|" + k + ":";
+    for (double x : v) s += std::to_string(x) + ",";
+  }
+  return s;
+}
+
+std::vector<std::string> fingerprints(const std::vector<CellResult>& cells) {
+  std::vector<std::string> out;
+  for (const auto& c : cells) out.push_back(fingerprint(c));
+  return out;
+}
+
+struct FileId {
+  ino_t inode;
+  timespec mtime;
+  bool operator==(const FileId& o) const {
+    return inode == o.inode && mtime.tv_sec == o.mtime.tv_sec && mtime.tv_nsec == o.mtime.tv_nsec;
+  }
+};
+FileId file_id(const fs::path& p) {
+  struct stat st {};
+  EXPECT_EQ(::stat(p.c_str(), &st), 0) << p;
+  return {st.st_ino, st.st_mtim};
+}
+
+}  // namespace
+
+TEST(StudyStore, CellRoundTripsThroughHdf5) {
+  TempDir tmp;
+  const StudyConfig cfg = parse_config(kConfig, "c.toml");
+  Store store(tmp.path);
+  store.open_for(cfg);
+  CellResult r;
+  r.cell = enumerate_cells(cfg)[1];
+  r.status = "unstable";
+  r.unstable_step = 17;
+  r.reason = "unstable at step 17: NaN in the forces";
+  r.scalars["temperature_mean"] = 1.0312;
+  r.scalars["chi2.a.trials"] = 100;
+  r.notes["nist"] = "not applicable: too few bits";
+  r.series["vpdf/p"] = {0.1, 0.2, 0.3};
+  r.series["empty"] = {};
+  r.matrices["nist/histogram"] = dpdrng::study::h5::Matrix{2, 3, {1, 2, 3, 4, 5, 6}};
+  r.strings["nist/test"] = {"Frequency", "BlockFrequency"};
+  store.save(r);
+  ASSERT_TRUE(store.has(r.cell));
+  const CellResult back = store.load(r.cell);
+  EXPECT_EQ(fingerprint(back), fingerprint(r));
+  EXPECT_EQ(back.cell.seed, r.cell.seed);
+  EXPECT_EQ(back.unstable_step, 17);
+  EXPECT_EQ(back.notes.at("nist"), r.notes.at("nist"));
+  EXPECT_EQ(back.matrices.at("nist/histogram").cols, 3u);
+  EXPECT_EQ(back.matrices.at("nist/histogram").data, r.matrices.at("nist/histogram").data);
+  EXPECT_EQ(back.strings.at("nist/test"), r.strings.at("nist/test"));
+  EXPECT_TRUE(back.series.at("empty").empty());
+}
+
+TEST(StudyStore, ResumeRecomputesOnlyMissingOrDamagedCells) {
+  const StudyConfig cfg = parse_config(kConfig, "c.toml");
+  const std::size_t n = enumerate_cells(cfg).size();
+
+  TempDir ref_dir;
+  fake::FakeMeasure ref_measure;
+  Store ref(ref_dir.path);
+  ref.open_for(cfg);
+  run_study(cfg, ref, RunOptions{}, as_fn(ref_measure));
+
+  TempDir tmp;
+  fake::FakeMeasure m;
+  Store store(tmp.path);
+  store.open_for(cfg);
+  RunOptions o;
+  o.threads = 2;
+  RunSummary s = run_study(cfg, store, o, as_fn(m));
+  EXPECT_EQ(s.computed, n);
+  const auto cells = enumerate_cells(cfg);
+  const fs::path kept = store.cell_path(cells[0]);
+  const FileId before = file_id(kept);
+
+  // An interrupted run: one cell never finished, one was cut short mid-write, and a temp file was left behind.
+  fs::remove(store.cell_path(cells[2]));
+  fs::resize_file(store.cell_path(cells[4]), fs::file_size(store.cell_path(cells[4])) / 2);
+  std::ofstream(tmp.path / "cells" / ".stray.h5.tmp123") << "partial";
+
+  s = run_study(cfg, store, o, as_fn(m));
+  EXPECT_EQ(s.resumed, n - 2);
+  EXPECT_EQ(s.computed, 2u);
+  for (const auto& c : cells) {
+    const int expect = (c.id() == cells[2].id() || c.id() == cells[4].id()) ? 2 : 1;
+    EXPECT_EQ(m.calls[c.id()], expect) << c.id();
+  }
+  EXPECT_TRUE(file_id(kept) == before) << "a finished cell was rewritten";
+  EXPECT_EQ(fingerprints(store.load_all()), fingerprints(ref.load_all()));
+
+  // A third run has nothing to do.
+  s = run_study(cfg, store, o, as_fn(m));
+  EXPECT_EQ(s.computed, 0u);
+  EXPECT_EQ(store.assemble(cfg), n);
+}
+
+TEST(StudyStore, RefusesAnotherConfigsDirectory) {
+  TempDir tmp;
+  const StudyConfig a = parse_config(kConfig, "a.toml");
+  std::string other = kConfig;
+  other.replace(other.find("replicas = 3"), 12, "replicas = 2");
+  const StudyConfig b = parse_config(other, "b.toml");
+  Store(tmp.path).open_for(a);
+  try {
+    Store(tmp.path).open_for(b);
+    FAIL() << "a store made with another config was accepted";
+  } catch (const dpdrng::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("different config"), std::string::npos);
+  }
+  EXPECT_NO_THROW(Store(tmp.path).open_for(a));
+}
+
+TEST(StudyStore, ShardsMergeIntoWhatOneRunGives) {
+  const StudyConfig cfg = parse_config(kConfig, "c.toml");
+  TempDir whole_dir, s1, s2, s3;
+  fake::FakeMeasure m;
+  Store whole(whole_dir.path);
+  whole.open_for(cfg);
+  run_study(cfg, whole, RunOptions{}, as_fn(m));
+
+  std::vector<fs::path> shard_dirs{s1.path, s2.path, s3.path};
+  for (int k = 1; k <= 3; ++k) {
+    Store s(shard_dirs[std::size_t(k - 1)]);
+    s.open_for(cfg);
+    RunOptions o;
+    o.shard = Shard{k, 3};
+    const RunSummary sum = run_study(cfg, s, o, as_fn(m));
+    EXPECT_GT(sum.computed, 0u);
+    EXPECT_LT(sum.computed, enumerate_cells(cfg).size());
+  }
+  Store merged(s1.path);
+  merged.merge_from(Store(s2.path));
+  merged.merge_from(Store(s3.path));
+  EXPECT_EQ(merged.assemble(cfg), enumerate_cells(cfg).size());
+  EXPECT_EQ(fingerprints(merged.load_all()), fingerprints(whole.load_all()));
+}
+
+TEST(StudyStore, AssembledFileIsPlainHdf5WithConfigAndOneGroupPerCell) {
+  const StudyConfig cfg = parse_config(kConfig, "c.toml");
+  TempDir tmp;
+  fake::FakeMeasure m;
+  Store store(tmp.path);
+  store.open_for(cfg);
+  run_study(cfg, store, RunOptions{}, as_fn(m));
+  store.assemble(cfg);
+  std::lock_guard lk(h5::lock());
+  h5::Handle f = h5::open_file(store.study_file().string());
+  const auto attrs = h5::read_attributes(f.id());
+  EXPECT_EQ(std::get<std::string>(attrs.at("config_hash")), cfg.hash);
+  EXPECT_EQ(std::get<std::string>(attrs.at("config_toml")), kConfig);
+  h5::Handle cells = h5::open_group(f.id(), "cells");
+  EXPECT_EQ(h5::list(cells.id()).size(), enumerate_cells(cfg).size());
+  if (std::system("command -v h5dump >/dev/null 2>&1") == 0) {
+    const std::string cmd = "h5dump -A '" + store.study_file().string() + "' >/dev/null 2>&1";
+    EXPECT_EQ(std::system(cmd.c_str()), 0) << "h5dump cannot read study.h5";
+  }
+}
+
+TEST(StudyStore, AFailingCellIsRecordedAndTheSweepGoesOn) {
+  const StudyConfig cfg = parse_config(kConfig, "c.toml");
+  TempDir tmp;
+  Store store(tmp.path);
+  store.open_for(cfg);
+  fake::FakeMeasure m;
+  const MeasureFn flaky = [&](const Cell& c, const StudyConfig& k, int t) {
+    if (c.generator == "tea64") throw std::runtime_error("engine exploded");
+    return m(c, k, t);
+  };
+  const RunSummary s = run_study(cfg, store, RunOptions{}, flaky);
+  EXPECT_EQ(s.failed, 3u);  // tea64 × 3 replicas
+  EXPECT_EQ(s.computed, enumerate_cells(cfg).size());
+  for (const auto& r : store.load_all())
+    if (r.cell.generator == "tea64") {
+      EXPECT_EQ(r.status, "failed");
+      EXPECT_EQ(r.reason, "engine exploded");
+    }
+}
