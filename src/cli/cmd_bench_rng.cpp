@@ -181,11 +181,15 @@ class Collector : public benchmark::BenchmarkReporter {
       const auto it = index_.find(r.run_name.function_name);
       if (it == index_.end()) continue;
       if (r.error_occurred) throw std::runtime_error("benchmark " + r.benchmark_name() + ": " + r.error_message);
-      samples[it->second].push_back(r.GetAdjustedRealTime());  // ns per iteration (Unit set below)
-      std::fprintf(stderr, "\r%zu/%zu benchmarks", ++done_, total);
+      // CPU time, not wall time: on a shared machine the time the OS gives to other processes must not count.
+      samples[it->second].push_back(r.GetAdjustedCPUTime());  // ns per iteration (Unit set below)
+      ++done_;
+      if (progress_) std::fprintf(stderr, "\r%zu/%zu benchmarks", done_, total);
     }
   }
-  void Finalize() override { std::fprintf(stderr, "\n"); }
+  void Finalize() override {
+    if (progress_) std::fprintf(stderr, "\n");
+  }
 
   std::map<std::size_t, std::vector<double>> samples;
   std::size_t total = 0;
@@ -197,6 +201,7 @@ class Collector : public benchmark::BenchmarkReporter {
  private:
   const std::map<std::string, std::size_t>& index_;
   std::size_t done_ = 0;
+  bool progress_ = isatty(STDERR_FILENO) != 0;  // a progress counter for people, not for log files
 };
 
 double median(std::vector<double> v) {
@@ -240,7 +245,7 @@ nlohmann::json run_context(const Collector& c, const BenchArgs& a) {
           {"compiler", compiler},  {"build_type", build},      {"simd", simd},
           {"num_cpus", c.cpus_},   {"mhz_per_cpu", c.mhz_},    {"cpu_scaling_enabled", c.scaling_},
           {"load_avg", c.load_},   {"min_time_s", a.min_time}, {"repetitions", a.repetitions},
-          {"buffer_outputs", a.buffer}};
+          {"buffer_outputs", a.buffer},  {"time", "process CPU time, median over repetitions"}};
 }
 
 void run_bench(const BenchArgs& a) {
@@ -315,11 +320,12 @@ void run_bench(const BenchArgs& a) {
   std::map<std::pair<std::size_t, Mode>, std::size_t> at;
   for (std::size_t c = 0; c < cases.size(); ++c) at[{cases[c].row, cases[c].mode}] = c;
   std::printf("dpdrng bench rng: median of %d repetitions, ns per 64-bit output (scalar, batch) or per number\n"
-              "(distributions); in brackets the ratio to mt19937 in the same mode and run.\n\n",
+              "(distributions); in brackets the ratio to mt19937 in the same mode and run; last column: batched gauss\n"
+              "over batched uniform.\n\n",
               a.repetitions);
   std::printf("%-16s", "generator");
   for (Mode m : kModes) std::printf(" %17s", mode_name(m));
-  std::printf("\n");
+  std::printf(" %12s\n", "gauss/unif.");
   for (std::size_t r = 0; r < table.size(); ++r) {
     bool any = false;
     for (Mode m : kModes) any = any || at.count({r, m});
@@ -335,7 +341,11 @@ void run_bench(const BenchArgs& a) {
       std::snprintf(cell, sizeof cell, "%.3f (%.2fx)", med[it->second], ratio(it->second));
       std::printf(" %17s", cell);
     }
-    std::printf("\n");
+    const auto g = at.find({r, Mode::gauss}), u = at.find({r, Mode::uniform});
+    if (g != at.end() && u != at.end() && med[u->second] > 0)
+      std::printf(" %11.2fx\n", med[g->second] / med[u->second]);
+    else
+      std::printf(" %12s\n", "-");
   }
   const nlohmann::json ctx = run_context(collector, a);
   std::printf("\n%s, %s, %s, %s, dpdrng %s, %d CPUs at %.0f MHz%s\n", ctx["host"].get<std::string>().c_str(),
@@ -354,8 +364,8 @@ const bool registered = register_command(40, [](CLI::App& root) {
       "Modes: scalar = independent counter-mode calls one at a time, each output forced into a register, so\n"
       "the CPU may overlap calls but the compiler cannot vectorise them; batch = fill_stream() into a buffer\n"
       "(SIMD kernels for tea32, tea64, philox4x32, threefry2x64, splitmix64); scalar-/batch- uniform and gauss =\n"
-      "one number per call (draw<> and fill_noise()). Times are medians over repetitions; run it on a quiet\n"
-      "machine (e.g. under nice on a shared one) and compare ratios rather than absolute times.");
+      "one number per call (draw<> and fill_noise()). Times are process CPU time (time lent to other processes\n"
+      "does not count), medians over repetitions; on a shared machine compare ratios, not absolute times.");
   sub->add_flag("--json", args->json, "machine-readable output with run context and every repetition");
   sub->add_option("--min-time", args->min_time, "minimum seconds per repetition of each benchmark")
       ->capture_default_str();

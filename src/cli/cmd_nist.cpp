@@ -66,9 +66,15 @@ void print_nist(const NistInput& in, const std::vector<std::vector<nist::TestRes
     return;
   }
   std::cout << nist::final_analysis_report(rows, in.source(), in.alpha);
-  // Say why a test has no P-values rather than leaving an empty row unexplained.
-  for (const auto& t : results.front())
-    if (!t.applicable) std::cout << "n/a " << nist::test_name(t.test) << " (stream 1): " << t.reason << "\n";
+  // Say why a test has fewer (or no) P-values rather than leaving the sample size unexplained.
+  for (std::size_t ti = 0; ti < results.front().size(); ++ti) {
+    std::size_t na = 0, first = 0;
+    for (std::size_t i = results.size(); i-- > 0;)
+      if (!results[i][ti].applicable) ++na, first = i;
+    if (na == 0) continue;
+    std::cout << "n/a " << nist::test_name(results.front()[ti].test) << " on " << na << " of " << results.size()
+              << " streams (stream " << first + 1 << ": " << results[first][ti].reason << ")\n";
+  }
 }
 
 namespace {

@@ -24,6 +24,7 @@ struct RunArgs {
 void run(const RunArgs& a) {
   // Everything that can be wrong with the input is checked before the first byte is written.
   const StudyConfig config = load_config(a.config);
+  validate_scene(config);
   RunOptions o;
   o.shard = parse_shard(a.shard);
   o.threads = a.threads > 0 ? a.threads : std::max(1u, std::thread::hardware_concurrency());

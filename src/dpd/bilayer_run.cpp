@@ -91,7 +91,7 @@ BilayerResult run_bilayer(const BilayerConfig& in, const RunHooks& hooks) {
 
   std::int64_t current = 0;
   double force_s = 0, bonded_s = 0;
-  std::uint64_t numbers = 0;
+  std::uint64_t numbers = 0, zetas = 0;
   BondedSums last_bonded;
   Taps no_taps;
   auto make_force = [&](PairForces& pair) {
@@ -107,6 +107,7 @@ BilayerResult run_bilayer(const BilayerConfig& in, const RunHooks& hooks) {
       const auto t2 = Clock::now();
       force_s += seconds(t0, t2), bonded_s += seconds(t1, t2);
       numbers += f.numbers;
+      zetas += f.in_range;
       return f;
     });
   };
@@ -212,8 +213,11 @@ BilayerResult run_bilayer(const BilayerConfig& in, const RunHooks& hooks) {
   t.per_step_s = r.steps_done ? total / r.steps_done : 0;
   t.particle_steps_per_s = total > 0 ? double(n) * r.steps_done / total : 0;
   t.random_numbers = numbers;
+  t.zetas = zetas;
   t.ns_per_number = pair_main->ns_per_number();
-  t.rng_share_estimate = force_s > 0 ? std::min(1.0, numbers * t.ns_per_number * 1e-9 / force_s) : 0;
+  t.ns_per_zeta = pair_main->ns_per_zeta();
+  const double rng_s = (numbers * t.ns_per_number + zetas * t.ns_per_zeta) * 1e-9;
+  t.rng_share_estimate = force_s > 0 ? std::min(1.0, rng_s / force_s) : 0;
   t.list_builds = pair_warm->list_builds() + pair_main->list_builds();
   t.threads = cfg.threads;
   r.bonded_s = bonded_s;
@@ -273,7 +277,9 @@ nlohmann::json to_json(const BilayerResult& r, bool arrays) {
                   {"per_step_s", t.per_step_s},
                   {"particle_steps_per_s", t.particle_steps_per_s},
                   {"random_numbers", t.random_numbers},
+                  {"zetas", t.zetas},
                   {"ns_per_number", t.ns_per_number},
+                  {"ns_per_zeta", t.ns_per_zeta},
                   {"rng_share_estimate", t.rng_share_estimate},
                   {"list_builds", t.list_builds},
                   {"threads", t.threads}};

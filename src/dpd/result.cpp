@@ -74,8 +74,12 @@ nlohmann::json to_json(const RunResult& r, bool arrays) {
                   {"force_s", t.force_s},
                   {"per_step_s", t.per_step_s},
                   {"particle_steps_per_s", t.particle_steps_per_s},
+                  {"production_s", t.production_s},
+                  {"production_particle_steps_per_s", t.production_particle_steps_per_s},
                   {"random_numbers", t.random_numbers},
+                  {"zetas", t.zetas},
                   {"ns_per_number", t.ns_per_number},
+                  {"ns_per_zeta", t.ns_per_zeta},
                   {"rng_share_estimate", t.rng_share_estimate},
                   {"list_builds", t.list_builds},
                   {"threads", t.threads}};

@@ -72,7 +72,7 @@ RunResult run_water(const WaterConfig& in, const RunHooks& hooks) {
 
   std::int64_t current = 0;
   double force_s = 0;
-  std::uint64_t numbers = 0;
+  std::uint64_t numbers = 0, zetas = 0;
   const ForceFn force = [&](System& sys, VelocityView v) {
     const auto t0 = Clock::now();
     const bool tap_raw = std::binary_search(raw_steps.begin(), raw_steps.end(), current);
@@ -80,6 +80,7 @@ RunResult run_water(const WaterConfig& in, const RunHooks& hooks) {
     const ForceSums f = pair->compute(sys, v, static_cast<std::uint64_t>(current), tap_raw, tap_series, r.taps);
     force_s += seconds(t0, Clock::now());
     numbers += f.numbers;
+    zetas += cfg.noise_override == NoiseOverride::none ? 0 : f.in_range;
     return f;
   };
 
@@ -97,9 +98,11 @@ RunResult run_water(const WaterConfig& in, const RunHooks& hooks) {
   const auto t_start = Clock::now();
   ForceSums f = vv.start(s, force);
   const auto p0 = s.momentum();
+  auto t_production = t_start;
   const std::int64_t progress_every = std::max<std::int64_t>(1, cfg.steps / 50);
   for (std::int64_t step = 1; step <= cfg.steps; ++step) {
     current = step;
+    if (step == cfg.equilibrate + 1) t_production = Clock::now();
     f = vv.step(s, force);
     r.steps_done = step;
     double kin[3] = {0, 0, 0};
@@ -135,7 +138,9 @@ RunResult run_water(const WaterConfig& in, const RunHooks& hooks) {
     if (hooks.observe) hooks.observe(step, s);
     if (hooks.progress && step % progress_every == 0) hooks.progress(step, cfg.steps);
   }
-  const double total = seconds(t_start, Clock::now());
+  const auto t_end = Clock::now();
+  const double total = seconds(t_start, t_end);
+  const double production_s = r.steps_done > cfg.equilibrate ? seconds(t_production, t_end) : 0.0;
 
   r.momentum_final = s.momentum();
   r.temperature = make_stat(smp.T);
@@ -152,9 +157,15 @@ RunResult run_water(const WaterConfig& in, const RunHooks& hooks) {
   t.force_s = force_s;
   t.per_step_s = r.steps_done ? total / r.steps_done : 0;
   t.particle_steps_per_s = total > 0 ? double(n) * r.steps_done / total : 0;
+  t.production_s = production_s;
+  t.production_particle_steps_per_s =
+      production_s > 0 ? double(n) * double(r.steps_done - cfg.equilibrate) / production_s : 0;
   t.random_numbers = numbers;
+  t.zetas = zetas;
   t.ns_per_number = pair->ns_per_number();
-  t.rng_share_estimate = force_s > 0 ? std::min(1.0, numbers * t.ns_per_number * 1e-9 / force_s) : 0;
+  t.ns_per_zeta = pair->ns_per_zeta();
+  const double rng_s = (numbers * t.ns_per_number + zetas * t.ns_per_zeta) * 1e-9;
+  t.rng_share_estimate = force_s > 0 ? std::min(1.0, rng_s / force_s) : 0;
   t.list_builds = pair->list_builds();
   t.threads = cfg.threads;
   return r;

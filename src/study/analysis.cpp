@@ -185,6 +185,7 @@ void read_nist(VariantReport& v, double alpha) {
     const auto* pu = c->find_series("nist/p_uniformity");
     const auto* passed = c->find_series("nist/passed");
     const auto* appl = c->find_series("nist/applicable");
+    const auto* stored_ok = c->find_series("nist/ok");
     if (t == c->strings.end() || var == c->strings.end() || hist == c->matrices.end() || !pu || !passed || !appl)
       continue;
     const std::size_t n = t->second.size();
@@ -206,6 +207,7 @@ void read_nist(VariantReport& v, double alpha) {
         r.proportion_ok = r.passed / m >= lo;
         r.uniformity_ok = !(r.p_uniformity < 0.0001);
       }
+      r.ok = stored_ok && stored_ok->size() == n ? (*stored_ok)[i] != 0 : (r.proportion_ok && r.uniformity_ok);
       v.nist.push_back(r);
     }
     v.nist_cell = c->cell.id();

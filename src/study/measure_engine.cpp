@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <set>
 
+#include "dpdrng/common/error.hpp"
 #include "dpdrng/rng/registry.hpp"
 #include "dpdrng/study/measure.hpp"
 
@@ -66,6 +67,19 @@ dpd::WaterConfig engine_config(const Cell& cell, const StudyConfig& config, int 
   w.taps.raw_steps.assign(raw.begin(), raw.end());
   w.taps.pairs = plan.pairs;
   return w;
+}
+
+void validate_scene(const StudyConfig& config) {
+  const auto cells = enumerate_cells(config);
+  std::set<double> seen;
+  for (const auto& c : cells) {
+    if (!seen.insert(c.dt).second) continue;
+    try {
+      engine_config(c, config, 1, TapPlan{}).validate();
+    } catch (const InputError& e) {
+      throw InputError("study config " + config.name + ": scene (dt = " + std::to_string(c.dt) + "): " + e.what());
+    }
+  }
 }
 
 namespace {

@@ -4,10 +4,10 @@
 #include <cstdlib>
 #include <string>
 
-namespace dpdrng::dpd::testing {
+namespace dpdrng::dpd::test_scale {
 inline bool small_scale() {
   const char* e = std::getenv("DPDRNG_TEST_SCALE");
   return e != nullptr && std::string(e) == "small";
 }
 inline long scaled(long full, long small) { return small_scale() ? small : full; }
-}  // namespace dpdrng::dpd::testing
+}  // namespace dpdrng::dpd::test_scale

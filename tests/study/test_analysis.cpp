@@ -49,14 +49,15 @@ const VariantReport& find(const Analysis& a, const std::string& gen, int rounds)
 }  // namespace
 
 TEST(StudyAnalysis, WelchMatchesAHandComputation) {
-  // x = {1,2,3,4}, y = {2,4,6,8}: t = -2.4495, Welch dof = 4.4118 → two-sided p = 0.06526 (R: t.test(x, y)).
-  EXPECT_NEAR(welch_p({1, 2, 3, 4}, {2, 4, 6, 8}), 0.06526, 5e-5);
+  // x = {1,2,3,4}, y = {2,4,6,8}: t = -1.7321, Welch dof = 4.4118, two-sided p = 0.1516 (R: t.test(x, y);
+  // the P-value also checked by integrating the t density numerically).
+  EXPECT_NEAR(welch_p({1, 2, 3, 4}, {2, 4, 6, 8}), 0.15158, 5e-5);
   EXPECT_TRUE(std::isnan(welch_p({1}, {2, 3})));
   EXPECT_DOUBLE_EQ(welch_p({1, 1}, {1, 1}), 1.0);
 }
 
 TEST(StudyAnalysis, CurveErrorSkipsBinsBelowTheThreshold) {
-  EXPECT_DOUBLE_EQ(curve_error({1.1, 2.0, 50}, {1.0, 2.0, 0.01}, 0.5), 0.05);
+  EXPECT_NEAR(curve_error({1.1, 2.0, 50}, {1.0, 2.0, 0.01}, 0.5), 0.05, 1e-12);
   EXPECT_TRUE(std::isnan(curve_error({1, 2}, {1, 2, 3}, 0)));
 }
 
@@ -139,7 +140,15 @@ TEST(StudyReport, NistLayoutFollowsTheReference) {
   const std::string text = nist_final_analysis_report(v, 0.01);
   EXPECT_NE(text.find(" C1  C2  C3  C4  C5  C6  C7  C8  C9 C10  P-VALUE  PROPORTION  STATISTICAL TEST"),
             std::string::npos);
-  EXPECT_NE(text.find("  99/100     Frequency"), std::string::npos) << text;
-  EXPECT_NE(text.find("  90/100 *   Runs"), std::string::npos) << text;
+  const auto line_with = [&](const std::string& what) {
+    const auto at = text.find(what);
+    if (at == std::string::npos) return std::string();
+    const auto start = text.rfind('\n', at) + 1;
+    return text.substr(start, text.find('\n', at) - start);
+  };
+  EXPECT_NE(line_with("Frequency").find(" 99/100"), std::string::npos) << text;
+  EXPECT_EQ(line_with("Frequency").find('*'), std::string::npos) << text;
+  EXPECT_NE(line_with("Runs").find(" 90/100"), std::string::npos) << text;
+  EXPECT_NE(line_with("Runs").find('*'), std::string::npos) << text;
   EXPECT_NE(text.find("1 of 2 P-value series fail the proportion bound"), std::string::npos) << text;
 }

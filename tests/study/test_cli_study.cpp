@@ -40,7 +40,7 @@ distributions = ["gauss"]
 name = "tea32"
 rounds = [1, 8]
 [scene]
-particles = 24
+particles = 32
 steps = 240
 equilibrate = 40
 [tests]
@@ -96,7 +96,7 @@ std::vector<fs::path> cell_files(const fs::path& dir) {
 TEST(StudyCli, BadConfigExitsTwoAndWritesNothing) {
   TempDir tmp;
   std::string bad = kTiny;
-  bad.replace(bad.find("particles = 24"), 14, "particles = 24\ngama = 4.5");
+  bad.replace(bad.find("particles = 32"), 14, "particles = 32\ngama = 4.5");
   write(tmp.path / "bad.toml", bad);
   std::string err;
   EXPECT_EQ(run_cli("study run '" + (tmp.path / "bad.toml").string() + "' --out '" + (tmp.path / "out").string() + "'",
@@ -107,7 +107,7 @@ TEST(StudyCli, BadConfigExitsTwoAndWritesNothing) {
 
   write(tmp.path / "nan.toml", [] {
     std::string s = kTiny;
-    return s.replace(s.find("particles = 24"), 14, "particles = 24\ndt = nan");
+    return s.replace(s.find("particles = 32"), 14, "particles = 32\ndt = nan");
   }());
   EXPECT_EQ(run_cli("study run '" + (tmp.path / "nan.toml").string() + "' --out '" + (tmp.path / "out").string() + "'",
                     &err),
@@ -115,6 +115,16 @@ TEST(StudyCli, BadConfigExitsTwoAndWritesNothing) {
   EXPECT_NE(err.find("scene.dt"), std::string::npos) << err;
   EXPECT_FALSE(fs::exists(tmp.path / "out"));
   EXPECT_EQ(run_cli("study run '" + (tmp.path / "missing.toml").string() + "'", &err), 2);
+  // Valid TOML, but a box the engine refuses (L = 2 r_c): caught before the run, not as failed cells.
+  write(tmp.path / "small.toml", [] {
+    std::string s = kTiny;
+    return s.replace(s.find("particles = 32"), 14, "particles = 24");
+  }());
+  EXPECT_EQ(run_cli("study run '" + (tmp.path / "small.toml").string() + "' --out '" + (tmp.path / "out").string() + "'",
+                    &err),
+            2);
+  EXPECT_NE(err.find("scene"), std::string::npos) << err;
+  EXPECT_FALSE(fs::exists(tmp.path / "out"));
   EXPECT_EQ(run_cli("study run '" + (tmp.path / "bad.toml").string() + "' --shard 3/2", &err), 2);
 }
 
@@ -126,6 +136,7 @@ TEST(StudyCli, KilledRunResumesToTheUninterruptedResult) {
   ASSERT_EQ(run_cli("study run " + cfg + " --threads 2 --out '" + whole.string() + "'"), 0);
   const auto expected = fingerprints(whole);
   ASSERT_EQ(expected.size(), 9u);  // 3 replicas × (mt19937, tea32(1), tea32(8))
+  for (const auto& c : Store(whole).load_all()) ASSERT_EQ(c.status, "ok") << c.cell.id() << ": " << c.reason;
 
   // Start the run and kill it (SIGKILL: no chance to clean up) once it has finished some cells.
   const pid_t pid = fork();
@@ -186,4 +197,27 @@ TEST(StudyCli, ShardsRunApartMergeIntoOneStore) {
   ASSERT_EQ(run_cli("study merge '" + a.string() + "' '" + b.string() + "'", &err), 0) << err;
   ASSERT_EQ(run_cli("study run " + cfg + " --out '" + whole.string() + "'"), 0);
   EXPECT_EQ(fingerprints(a), fingerprints(whole));
+}
+
+TEST(StudyCli, ABlownUpRunIsRecordedAsUnstableAndTheSweepGoesOn) {
+  TempDir tmp;
+  std::string s = kTiny;
+  s.replace(s.find("particles = 32"), 14, "particles = 32\ndt = 0.5");  // far beyond DPD's stable Δt
+  write(tmp.path / "hot.toml", s);
+  std::string err;
+  ASSERT_EQ(run_cli("study run '" + (tmp.path / "hot.toml").string() + "' --out '" + (tmp.path / "o").string() + "'",
+                    &err),
+            0)
+      << err;
+  const auto cells = Store(tmp.path / "o").load_all();
+  ASSERT_EQ(cells.size(), 9u);
+  for (const auto& c : cells) {
+    EXPECT_EQ(c.status, "unstable") << c.cell.id();
+    EXPECT_GT(c.unstable_step, 0) << c.cell.id();
+    EXPECT_NE(c.reason.find("unstable at step"), std::string::npos) << c.reason;
+  }
+  ASSERT_EQ(run_cli("study report --no-charts '" + (tmp.path / "o").string() + "'", &err), 0) << err;
+  std::ifstream md(tmp.path / "o" / "report" / "report.md");
+  const std::string text(std::istreambuf_iterator<char>(md), {});
+  EXPECT_NE(text.find("unstable: 9"), std::string::npos);
 }

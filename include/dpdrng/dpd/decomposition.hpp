@@ -41,7 +41,8 @@ struct DomainGrid {
 DomainGrid parse_domains(std::string_view text);
 std::string to_string(const DomainGrid& g);  // "2x2x1"
 
-// One owner's view of a pair: the separation r_j − r_i it computes, and the image of the partner it used.
+// One owner's view of a pair: the separation r_j − r_i it computes, and the periodic image of the partner's
+// ghost along the cut axes (uncut axes take the minimum image and report 0).
 struct PairView {
   std::array<double, 3> d{};
   std::array<int, 3> shift{};
@@ -57,13 +58,13 @@ inline PairView view_from(const System& s, const DomainGrid& g, std::size_t i, s
   for (int a = 0; a < 3; ++a) {
     const double L = s.box.L[a], h = L / 2, xi = pos[a][i], xj = pos[a][j];
     const double raw = xj - xi;
-    const int sh = raw > h ? -1 : (raw < -h ? 1 : 0);
-    v.shift[a] = sh;
     if (g.cut(a)) {
+      const int sh = raw > h ? -1 : (raw < -h ? 1 : 0);
       const double ghost = sh == 0 ? xj : (sh < 0 ? xj - L : xj + L);
+      v.shift[a] = sh;
       v.d[a] = ghost - xi;
     } else {
-      v.d[a] = min_image(raw, L, h);
+      v.d[a] = min_image(raw, L, h);  // no ghost along this axis: shift stays 0
     }
   }
   return v;
@@ -85,7 +86,7 @@ struct BoundaryStats {
   std::uint64_t evaluations = 0;          // force evaluations summed
   std::uint64_t in_range = 0;             // pairs inside r_c (as either owner sees them)
   std::uint64_t boundary = 0;             // of these, pairs whose beads lie in different domains
-  std::uint64_t shifted = 0;              // of these, pairs seen through a periodic ghost shift
+  std::uint64_t shifted = 0;              // of these, pairs seen through a periodic ghost shift (cut axes)
   std::uint64_t separation_mismatch = 0;  // boundary pairs whose two separations differ in any bit
   std::uint64_t range_mismatch = 0;       // boundary pairs one owner sees inside r_c and the other not
   std::uint64_t zeta_mismatch = 0;        // boundary pairs, both in range, whose two ζ differ in any bit

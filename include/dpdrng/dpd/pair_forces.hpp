@@ -58,8 +58,10 @@ class PairForces {
   // tap_raw: keep this step's raw words; tap_series: append to the pair series.
   virtual ForceSums compute(System& s, VelocityView v, std::uint64_t step, bool tap_raw, bool tap_series,
                             Taps& taps) = 0;
-  // Calibration: nanoseconds per generator call + distribution, timed in a tight loop on this run's noise.
+  // Calibration on this run's noise: nanoseconds per generator call (raw words, batched as in the pair loop;
+  // mt19937: per word of the step's buffer) and per distribution transform (ζ from a block).
   virtual double ns_per_number() const = 0;
+  virtual double ns_per_zeta() const { return 0.0; }
   virtual int words_per_pair() const = 0;
   virtual std::uint64_t list_builds() const { return 0; }
 };

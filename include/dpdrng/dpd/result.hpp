@@ -46,9 +46,15 @@ struct Rdf {
 struct Timings {
   double total_s = 0, force_s = 0, per_step_s = 0;
   double particle_steps_per_s = 0;
-  std::uint64_t random_numbers = 0;
-  double ns_per_number = 0;       // calibration of generator + distribution in a tight loop
-  double rng_share_estimate = 0;  // random_numbers × ns_per_number / force time (bench measures it by difference)
+  // The production steps alone (after equilibration): the steady-state cost, without the start-up transient
+  // of a random initial configuration (hot overlaps, Verlet lists rebuilt every step).
+  double production_s = 0, production_particle_steps_per_s = 0;
+  std::uint64_t random_numbers = 0;  // generator calls (all mode: every pair every step)
+  std::uint64_t zetas = 0;           // distribution transforms (pairs inside r_c)
+  double ns_per_number = 0;          // generator call, calibrated in a batch loop like the pair loop's
+  double ns_per_zeta = 0;            // distribution transform (Box–Muller or √3(2u−1))
+  // (random_numbers·ns_per_number + zetas·ns_per_zeta) / force time; `dpdrng bench dpd` measures it by difference.
+  double rng_share_estimate = 0;
   std::uint64_t list_builds = 0;
   int threads = 1;
 };

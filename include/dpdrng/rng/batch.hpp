@@ -5,6 +5,8 @@
 // The scalar hash is a chain of dependent operations, so one call at a time leaves most of the core idle.
 // Here a block of calls shares one SIMD register per state word (16 lanes of 32 bits, or 8 of 64), all rounds
 // run on registers, and the cost per output approaches (operations per round × rounds) / lanes.
+#include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <span>

@@ -56,6 +56,7 @@ struct NistRow {
   double p_uniformity = 1;
   double passed = 0, applicable = 0;
   bool proportion_ok = true, uniformity_ok = true;
+  bool ok = true;  // the battery's own (reference) second-level verdict when stored, else both checks above
 };
 
 struct VariantReport {

@@ -30,6 +30,9 @@ struct TapPlan {
 TapPlan plan_taps(const Cell& cell, const StudyConfig& config, int words_per_pair);
 
 dpd::WaterConfig engine_config(const Cell& cell, const StudyConfig& config, int threads, const TapPlan& plan);
+// The engine's own checks (box larger than 2 r_c, …) on every distinct scene of the config, before anything runs:
+// a scene the engine would refuse is a bad config (InputError naming "scene"), not a sweep of failed cells.
+void validate_scene(const StudyConfig& config);
 
 // Observables and costs of a finished (or blown-up) run.
 void record_run(const dpd::RunResult& run, CellResult& out);

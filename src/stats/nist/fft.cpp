@@ -2,6 +2,7 @@
 #include <gsl/gsl_fft_complex.h>
 #include <gsl/gsl_fft_real.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -50,7 +51,12 @@ void magnitudes_even(const BitSequence& s, std::vector<double>& mag) {
   thread_local std::vector<double> z;
   plan.prepare(h);
   z.resize(2 * h);
-  for (std::size_t i = 0; i < n; ++i) z[i] = s[i] ? 1.0 : -1.0;
+  const auto words = s.words();
+  for (std::size_t i = 0; i < n; i += 64) {
+    const std::uint64_t w = words[i / 64];
+    const std::size_t cnt = std::min<std::size_t>(64, n - i);
+    for (std::size_t b = 0; b < cnt; ++b) z[i + b] = static_cast<double>(static_cast<int>((w >> (63 - b)) & 1) * 2 - 1);
+  }
   if (gsl_fft_complex_forward(z.data(), 1, h, plan.table.get(), plan.work.get()) != 0)
     throw std::runtime_error("GSL FFT failed");
   mag.resize(h);

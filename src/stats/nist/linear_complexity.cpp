@@ -26,21 +26,25 @@ int bm_fixed(const BitSequence& s, std::size_t start, std::size_t len) {
     if ((N & 63) == 0) chunk = s.word_at(start + N);
     const std::uint64_t bit = chunk >> 63;
     chunk <<= 1;
-    for (std::size_t k = W - 1; k > 0; --k) T[k] = (T[k] << 1) | (T[k - 1] >> 63);
+    // Only the words that can hold set bits: T has bits 0..N, C degree <= L <= N.
+    const std::size_t tw = N / 64 + 1;
+    for (std::size_t k = tw - 1; k > 0; --k) T[k] = (T[k] << 1) | (T[k - 1] >> 63);
     T[0] = (T[0] << 1) | bit;
     std::uint64_t acc = 0;
-    for (std::size_t k = 0; k < W; ++k) acc ^= C[k] & T[k];
+    const std::size_t cw = static_cast<std::size_t>(L) / 64 + 1;
+    for (std::size_t k = 0; k < cw; ++k) acc ^= C[k] & T[k];
     if (!(std::popcount(acc) & 1)) continue;
     const bool grow = L <= static_cast<long>(N) / 2;
     if (grow) Tmp = C;
-    // C += x^(N-m) B
+    // C += x^(N-m) B; the result has degree <= N + 1.
     const std::size_t shift = static_cast<std::size_t>(static_cast<long>(N) - m);
     const std::size_t ws = shift / 64, bs = shift % 64;
+    const std::size_t top = std::min(W, (N + 1) / 64 + 1);
     if (bs == 0) {
-      for (std::size_t k = ws; k < W; ++k) C[k] ^= B[k - ws];
+      for (std::size_t k = ws; k < top; ++k) C[k] ^= B[k - ws];
     } else {
       C[ws] ^= B[0] << bs;
-      for (std::size_t k = ws + 1; k < W; ++k) C[k] ^= (B[k - ws] << bs) | (B[k - ws - 1] >> (64 - bs));
+      for (std::size_t k = ws + 1; k < top; ++k) C[k] ^= (B[k - ws] << bs) | (B[k - ws - 1] >> (64 - bs));
     }
     if (grow) {
       L = static_cast<long>(N) + 1 - L;
@@ -80,6 +84,56 @@ int bm_generic(const BitSequence& s, std::size_t start, std::size_t len) {
   return static_cast<int>(L);
 }
 
+// Berlekamp-Massey on up to 64 blocks at once, bit-sliced: word j of C holds coefficient c_j of every block
+// (block l in bit l), so one AND/XOR serves 64 blocks. The shift x^(N-m) that differs between blocks is avoided
+// by keeping B already shifted (Bx = x^(N-m) B), which every step multiplies by x: a uniform index shift.
+// The blocks are bits [first + l*M, first + (l+1)*M), l < lanes; their complexities go to L_out[l].
+void bm_sliced(const BitSequence& s, std::size_t first, std::size_t M, int lanes, int* L_out) {
+  thread_local std::vector<std::uint64_t> S, C, Bbuf;
+  S.assign(M, 0);
+  C.assign(M + 3, 0);
+  // Bx[j] lives at Bbuf[off + j]; multiplying by x is --off, so every loop below runs forwards (and vectorises).
+  Bbuf.assign(2 * M + 6, 0);
+  std::size_t off = M + 2;
+  for (int l = 0; l < lanes; ++l) {
+    const std::uint64_t lane = std::uint64_t{1} << l;
+    for (std::size_t N0 = 0; N0 < M; N0 += 64) {
+      const std::uint64_t w = s.word_at(first + static_cast<std::size_t>(l) * M + N0);
+      const std::size_t cnt = std::min<std::size_t>(64, M - N0);
+      // Stored reversed (S[M-1-N] = bit N) so that the discrepancy below reads both arrays forwards.
+      for (std::size_t b = 0; b < cnt; ++b) S[M - 1 - (N0 + b)] |= ((w >> (63 - b)) & 1) ? lane : 0;
+    }
+  }
+  std::array<long, 64> L{};
+  C[0] = ~std::uint64_t{0};
+  Bbuf[off + 1] = ~std::uint64_t{0};  // m = -1: Bx = x^(0 - (-1)) * 1
+  for (std::size_t N = 0; N < M; ++N) {
+    // d = s_N + sum_i c_i s_{N-i}, s_{N-i} being S[M-1-N+i]
+    const std::uint64_t* window = S.data() + (M - 1 - N);
+    std::uint64_t d = window[0];
+    for (std::size_t i = 1; i <= N; ++i) d ^= C[i] & window[i];
+    std::uint64_t grow = 0;
+    if (d) {
+      for (int l = 0; l < 64; ++l)
+        if (((d >> l) & 1) && L[l] <= static_cast<long>(N) / 2) {
+          grow |= std::uint64_t{1} << l;
+          L[l] = static_cast<long>(N) + 1 - L[l];
+        }
+    }
+    // C += Bx where d; next Bx = x * (grow ? old C : Bx).
+    const std::size_t top = std::min(N + 1, M + 1);
+    std::uint64_t* B = Bbuf.data() + off;
+    for (std::size_t j = 0; j <= top; ++j) {
+      const std::uint64_t c = C[j], b = B[j];
+      C[j] = c ^ (d & b);
+      B[j] = (grow & c) | (~grow & b);
+    }
+    --off;
+    Bbuf[off] = 0;
+  }
+  for (int l = 0; l < lanes; ++l) L_out[l] = static_cast<int>(L[l]);
+}
+
 }  // namespace
 
 int berlekamp_massey(const BitSequence& s, std::size_t start, std::size_t len) {
@@ -88,6 +142,14 @@ int berlekamp_massey(const BitSequence& s, std::size_t start, std::size_t len) {
   if (len < 64 * 8) return bm_fixed<8>(s, start, len);
   if (len < 64 * 16) return bm_fixed<16>(s, start, len);
   return bm_generic(s, start, len);
+}
+
+std::vector<int> block_linear_complexities(const BitSequence& s, int M) {
+  const std::size_t N = M > 0 ? s.size() / static_cast<std::size_t>(M) : 0;
+  std::vector<int> out(N);
+  for (std::size_t g = 0; g < N; g += 64)
+    bm_sliced(s, g * M, static_cast<std::size_t>(M), static_cast<int>(std::min<std::size_t>(64, N - g)), &out[g]);
+  return out;
 }
 
 TestResult linear_complexity(const BitSequence& s, int M) {
@@ -105,8 +167,7 @@ TestResult linear_complexity(const BitSequence& s, int M) {
   const double mean = M / 2.0 + (9.0 + sign1) / 36.0 - 1.0 / std::pow(2, M) * (M / 3.0 + 2.0 / 9.0);
   const double sign2 = M % 2 == 0 ? 1.0 : -1.0;
   double nu[7] = {};
-  for (std::size_t i = 0; i < N; ++i) {
-    const int L = berlekamp_massey(s, i * M, static_cast<std::size_t>(M));
+  for (const int L : block_linear_complexities(s, M)) {
     const double T = sign2 * (L - mean) + 2.0 / 9.0;
     int k;
     if (T <= -2.5) k = 0;

@@ -32,10 +32,16 @@ inline BitSequence binary_expansion(Constant c, std::size_t n = 1000000) {
   return s;
 }
 
+// Computed once per process and constant (ctest runs each test in its own process).
 inline const BitSequence& cached_expansion(Constant c) {
-  static const BitSequence seqs[4] = {binary_expansion(Constant::e), binary_expansion(Constant::pi),
-                                      binary_expansion(Constant::sqrt2), binary_expansion(Constant::sqrt3)};
-  return seqs[static_cast<int>(c)];
+  switch (c) {
+    case Constant::e: { static const BitSequence s = binary_expansion(c); return s; }
+    case Constant::pi: { static const BitSequence s = binary_expansion(c); return s; }
+    case Constant::sqrt2: { static const BitSequence s = binary_expansion(c); return s; }
+    case Constant::sqrt3: break;
+  }
+  static const BitSequence s = binary_expansion(Constant::sqrt3);
+  return s;
 }
 
 // DPDRNG_TEST_SCALE=small (the sanitizer run) shrinks the expensive tests.

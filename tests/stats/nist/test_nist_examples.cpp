@@ -110,6 +110,19 @@ TEST(Sp80022Examples, LinearComplexity) {  // 2.10.4 (L = 4), 2.10.8 (e, M = 100
   EXPECT_NEAR(r.p(), 0.845406, 1e-6);
 }
 
+// The bit-sliced Berlekamp-Massey of the test agrees with the one-block-at-a-time one, for block lengths on
+// both sides of word boundaries and a partial last group of blocks.
+TEST(LinearComplexityInternals, SlicedAgreesWithScalar) {
+  const BitSequence& e = testing_::cached_expansion(Constant::e);
+  for (int M : {13, 64, 65, 127, 500, 1000}) {
+    const BitSequence s = e.slice(7, static_cast<std::size_t>(M) * 70 + 5);
+    const auto sliced = block_linear_complexities(s, M);
+    ASSERT_EQ(sliced.size(), 70u);
+    for (std::size_t i = 0; i < sliced.size(); ++i)
+      ASSERT_EQ(sliced[i], berlekamp_massey(s, i * M, static_cast<std::size_t>(M))) << "M=" << M << " block " << i;
+  }
+}
+
 TEST(Sp80022Examples, Serial) {  // 2.11.4 (m = 3), 2.11.8 (e, m = 2)
   const TestResult a = serial(bits("0011011101"), 3);
   EXPECT_NEAR(a.values[0].statistic, 1.6, 1e-12);

@@ -69,7 +69,9 @@ TestResult serial(const BitSequence& s, int m = 16);
 // 2.10  Blocks of M bits (default 500), Berlekamp-Massey per block, the reference's rounded class probabilities.
 TestResult linear_complexity(const BitSequence& s, int M = 500);
 
-// Linear complexity of bits [start, start+len) (Berlekamp-Massey over GF(2)), exposed for testing.
+// Linear complexity of bits [start, start+len) (Berlekamp-Massey over GF(2)), one block at a time.
 int berlekamp_massey(const BitSequence& s, std::size_t start, std::size_t len);
+// Linear complexities of the n/M consecutive M-bit blocks; 64 blocks at a time, bit-sliced (what the test uses).
+std::vector<int> block_linear_complexities(const BitSequence& s, int M);
 
 }  // namespace dpdrng::stats::nist

@@ -1,0 +1,231 @@
+// dpdrng bench dpd: what the pair-noise choice costs a whole DPD run. Particle-steps per second for
+// all/cells × generators × rounds, the RNG's share of a step by difference against the same run with ζ = 0
+// (no generator, no distribution) and with the seed words passed unhashed (no generator), and the paper's
+// headline: the all-pairs 256-bead run with tea32(8) against tea32(1) (Okada et al. 2021: RNG 40 % of the
+// time at 8 rounds, 1.5x faster at 1 round).
+#include <unistd.h>
+
+#include <algorithm>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "dpdrng/cli/registry.hpp"
+#include "dpdrng/common/error.hpp"
+#include "dpdrng/dpd/water.hpp"
+
+namespace dpdrng::cli {
+namespace {
+
+struct BenchDpdArgs {
+  std::string generators = "tea32,tea64,philox4x32,threefry2x64,splitmix64,mt19937";
+  std::string rounds = "1,8,32";
+  std::string pairs = "all,cells";
+  std::string distribution = "gauss";
+  std::int64_t steps_all = 2000, steps_cells = 100;
+  int particles_cells = 24000;
+  int threads = 1;
+  int repeat = 3;
+  bool paper = false, json = false, scaling = true;
+};
+
+struct Case {
+  std::string label;
+  dpd::WaterConfig cfg;
+};
+
+struct Measured {
+  std::string label, pairs;
+  std::size_t particles = 0;
+  std::int64_t steps = 0;
+  int threads = 1;
+  double median_s = 0, particle_steps_per_s = 0;
+  double share_estimate = 0;
+};
+
+std::vector<std::string> split(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  for (std::string item; std::getline(in, item, ',');)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+dpd::WaterConfig scene(const BenchDpdArgs& a, dpd::PairMode mode, std::int64_t steps) {
+  dpd::WaterConfig c;
+  c.pairs = mode;
+  if (mode == dpd::PairMode::cells) {
+    // The LAMMPS comparison system of issue 4: 24 000 beads at ρ = 3, γ = 4.5.
+    c.particles = a.particles_cells;
+    c.gamma = 4.5;
+  }
+  // A short untimed start: a random initial configuration is hot for a few dozen steps.
+  c.equilibrate = mode == dpd::PairMode::cells ? 50 : 20;
+  c.steps = c.equilibrate + steps;
+  c.observables = false;
+  c.threads = a.threads;
+  c.distribution = rng::parse_distribution(a.distribution);
+  return c;
+}
+
+Measured measure(const Case& k, int repeat) {
+  std::vector<double> t;
+  double share = 0;
+  for (int r = 0; r < repeat; ++r) {
+    const dpd::RunResult res = dpd::run_water(k.cfg);
+    if (!res.ok()) throw std::runtime_error(k.label + ": " + res.status);
+    t.push_back(res.timings.production_s);
+    share = res.timings.rng_share_estimate;
+  }
+  std::sort(t.begin(), t.end());
+  Measured m;
+  m.label = k.label;
+  m.pairs = std::string(dpd::to_string(k.cfg.pairs));
+  m.particles = static_cast<std::size_t>(k.cfg.particles);
+  m.steps = k.cfg.steps - k.cfg.equilibrate;
+  m.threads = k.cfg.threads;
+  m.median_s = t[t.size() / 2];
+  m.particle_steps_per_s = double(m.particles) * m.steps / m.median_s;
+  m.share_estimate = share;
+  return m;
+}
+
+Case with_generator(dpd::WaterConfig c, const std::string& name, int rounds) {
+  c.generator = rng::validated({name, rounds});
+  return {rng::describe(c.generator), c};
+}
+
+Case baseline(dpd::WaterConfig c, dpd::NoiseOverride o) {
+  c.noise_override = o;
+  return {o == dpd::NoiseOverride::none ? "none (zeta = 0)" : "unhashed", c};
+}
+
+void progress(const std::string& what) {
+  if (isatty(STDERR_FILENO)) std::cerr << "\r\033[K" << what << std::flush;
+}
+
+nlohmann::json to_json(const Measured& m) {
+  return {{"case", m.label}, {"pairs", m.pairs}, {"particles", m.particles}, {"steps", m.steps},
+          {"threads", m.threads}, {"median_s", m.median_s}, {"particle_steps_per_s", m.particle_steps_per_s},
+          {"rng_share_estimate", m.share_estimate}};
+}
+
+void run_bench_dpd(const BenchDpdArgs& a) {
+  if (a.repeat < 1) throw InputError("--repeat must be at least 1");
+  if (a.threads < 1) throw InputError("--threads must be at least 1");
+  if (a.steps_all < 1 || a.steps_cells < 1) throw InputError("--steps-all and --steps-cells must be at least 1");
+  const auto rounds = parse_int_list(a.rounds, "--rounds");
+  std::vector<dpd::PairMode> modes;
+  for (const auto& p : split(a.pairs)) modes.push_back(dpd::parse_pair_mode(p));
+  for (const auto& g : split(a.generators)) rng::find_generator(g);  // InputError for unknown names
+
+  nlohmann::json out;
+  out["context"] = {{"version", DPDRNG_VERSION}, {"threads", a.threads}, {"repeat", a.repeat},
+                    {"distribution", a.distribution}, {"statistic", "median wall time of the production steps (after a short untimed start)"}};
+  std::vector<Measured> table;
+  for (dpd::PairMode mode : modes) {
+    const dpd::WaterConfig base = scene(a, mode, mode == dpd::PairMode::all ? a.steps_all : a.steps_cells);
+    std::vector<Case> cases{baseline(base, dpd::NoiseOverride::none), baseline(base, dpd::NoiseOverride::unhashed)};
+    for (const auto& g : split(a.generators)) {
+      const auto& info = rng::find_generator(g);
+      if (info.max_rounds == 1 || g == "philox4x32" || g == "threefry2x64") {
+        cases.push_back(with_generator(base, g, 0));
+        continue;
+      }
+      for (long long r : rounds)
+        if (r >= info.min_rounds && r <= info.max_rounds) cases.push_back(with_generator(base, g, int(r)));
+    }
+    for (const Case& k : cases) {
+      progress("bench dpd: " + std::string(dpd::to_string(mode)) + " " + k.label);
+      table.push_back(measure(k, a.repeat));
+    }
+  }
+
+  // The paper's setting: 256 beads, all pairs, tea32(8) vs tea32(1) vs no noise.
+  const std::int64_t paper_steps = a.paper ? 10000 : a.steps_all;
+  dpd::WaterConfig pc = scene(a, dpd::PairMode::all, paper_steps);
+  pc.distribution = rng::Distribution::gauss;
+  progress("bench dpd: paper setting");
+  const Measured t8 = measure(with_generator(pc, "tea32", 8), a.repeat);
+  const Measured t1 = measure(with_generator(pc, "tea32", 1), a.repeat);
+  const Measured t0 = measure(baseline(pc, dpd::NoiseOverride::none), a.repeat);
+  const double share8 = (t8.median_s - t0.median_s) / t8.median_s;
+  const double share1 = (t1.median_s - t0.median_s) / t1.median_s;
+  const double speedup = t8.median_s / t1.median_s;
+  const double full_run_s = t1.median_s * 10000.0 / paper_steps;
+
+  std::vector<Measured> scaling;
+  if (a.scaling) {
+    dpd::WaterConfig sc = scene(a, dpd::PairMode::cells, a.steps_cells);
+    for (int th : {1, 2}) {
+      sc.threads = th;
+      progress("bench dpd: cells scaling, " + std::to_string(th) + " thread(s)");
+      scaling.push_back(measure(with_generator(sc, "tea32", 1), a.repeat));
+    }
+  }
+  progress("");
+
+  if (a.json) {
+    for (const auto& m : table) out["throughput"].push_back(to_json(m));
+    out["paper"] = {{"steps", paper_steps},
+                    {"tea32_8_s", t8.median_s},
+                    {"tea32_1_s", t1.median_s},
+                    {"none_s", t0.median_s},
+                    {"rng_share_tea32_8", share8},
+                    {"rng_share_tea32_1", share1},
+                    {"speedup_8_to_1", speedup},
+                    {"tea32_1_10000_steps_s", full_run_s},
+                    {"paper_reference", {{"rng_share_8_rounds", 0.40}, {"speedup_8_to_1", 1.5}}}};
+    for (const auto& m : scaling) out["scaling"].push_back(to_json(m));
+    if (scaling.size() == 2)
+      out["scaling_speedup_2_threads"] = scaling[0].median_s / scaling[1].median_s;
+    std::cout << out.dump(2) << "\n";
+    return;
+  }
+  std::cout << "particle-steps/s (median of " << a.repeat << ", " << a.threads << " thread(s), " << a.distribution
+            << "); RNG share by difference against 'none'\n";
+  std::cout << std::left << std::setw(7) << "pairs" << std::setw(9) << "beads" << std::setw(20) << "noise"
+            << std::right << std::setw(14) << "p-steps/s" << std::setw(12) << "RNG share" << std::setw(12)
+            << "estimate" << "\n";
+  double none_s = 0;
+  for (const auto& m : table) {
+    if (m.label.rfind("none", 0) == 0) none_s = m.median_s;
+    std::cout << std::left << std::setw(7) << m.pairs << std::setw(9) << m.particles << std::setw(20) << m.label
+              << std::right << std::setw(14) << std::setprecision(4) << m.particle_steps_per_s << std::setw(11)
+              << std::fixed << std::setprecision(1) << 100 * (m.median_s - none_s) / m.median_s << "%"
+              << std::setw(11) << 100 * m.share_estimate << "%" << std::defaultfloat << "\n";
+  }
+  std::cout << "\npaper setting (256 beads, all pairs, gauss, " << paper_steps << " steps):\n"
+            << "  tea32(8) " << t8.median_s << " s, tea32(1) " << t1.median_s << " s, zeta = 0 " << t0.median_s
+            << " s\n"
+            << "  RNG share at 8 rounds " << 100 * share8 << " % (paper: 40 %), at 1 round " << 100 * share1 << " %\n"
+            << "  whole-run speed-up 8 -> 1 rounds " << speedup << "x (paper: 1.5x)\n"
+            << "  10 000 steps with tea32(1): " << full_run_s << " s" << (a.paper ? "" : " (extrapolated)") << "\n";
+  if (scaling.size() == 2)
+    std::cout << "\ncells, " << scaling[0].particles << " beads, tea32(1): 1 thread "
+              << scaling[0].particle_steps_per_s << " p-steps/s, 2 threads " << scaling[1].particle_steps_per_s
+              << " p-steps/s, speed-up " << scaling[0].median_s / scaling[1].median_s << "x\n";
+}
+
+const bool registered = register_command(62, [](CLI::App& root) {
+  auto a = std::make_shared<BenchDpdArgs>();
+  CLI::App& bench = group(root, "bench", "benchmarks: generator cost, NIST battery throughput, DPD step cost");
+  CLI::App* sub = bench.add_subcommand("dpd", "cost of the pair noise in whole DPD runs (particle-steps/s, RNG share)");
+  sub->add_option("--generators", a->generators, "comma-separated generators")->capture_default_str();
+  sub->add_option("--rounds", a->rounds, "round counts for tea32/tea64")->capture_default_str();
+  sub->add_option("--pairs", a->pairs, "all, cells or all,cells")->capture_default_str();
+  sub->add_option("--distribution", a->distribution, "gauss or uniform")->capture_default_str();
+  sub->add_option("--steps-all", a->steps_all, "steps of the 256-bead all-pairs runs")->capture_default_str();
+  sub->add_option("--steps-cells", a->steps_cells, "steps of the cells-mode runs")->capture_default_str();
+  sub->add_option("--particles-cells", a->particles_cells, "beads of the cells-mode system")->capture_default_str();
+  sub->add_option("--threads", a->threads, "OpenMP threads for the table")->capture_default_str();
+  sub->add_option("--repeat", a->repeat, "runs per case (the median is reported)")->capture_default_str();
+  sub->add_flag("--paper", a->paper, "time the paper's full 10 000-step run for tea32(8)/tea32(1)");
+  sub->add_flag("!--no-scaling", a->scaling, "skip the 1- vs 2-thread cells comparison");
+  sub->add_flag("--json", a->json, "machine-readable output");
+  sub->callback([a] { run_bench_dpd(*a); });
+});
+
+}  // namespace
+}  // namespace dpdrng::cli
