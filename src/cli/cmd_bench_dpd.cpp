@@ -196,6 +196,7 @@ void run_bench_dpd(const BenchDpdArgs& a) {
               << std::fixed << std::setprecision(1) << 100 * (m.median_s - none_s) / m.median_s << "%"
               << std::setw(11) << 100 * m.share_estimate << "%" << std::defaultfloat << "\n";
   }
+  std::cout << std::setprecision(3);
   std::cout << "\npaper setting (256 beads, all pairs, gauss, " << paper_steps << " steps):\n"
             << "  tea32(8) " << t8.median_s << " s, tea32(1) " << t1.median_s << " s, zeta = 0 " << t0.median_s
             << " s\n"

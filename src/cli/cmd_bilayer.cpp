@@ -1,4 +1,5 @@
 // dpdrng simulate-bilayer: issue 7's membrane scene (an H3(T6)2 bilayer in water) with human or JSON output.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -139,6 +140,33 @@ void run_bilayer_scene(const dpd::BilayerConfig& in, bool json, bool quiet, cons
     std::cout << dpd::to_json(r, false).dump(2) << "\n";
   else
     print_human(r);
+}
+
+void simulate_bilayer(const CLI::App& sub, const dpd::WaterConfig& w, const rng::GeneratorSpec& gen,
+                      const std::string& pairs, const std::string& seeding, const std::string& distribution,
+                      bool json, bool quiet, const std::string& series_dir) {
+  auto given = [&](const char* name) { return sub.count(name) > 0; };
+  for (const char* fixed : {"--particles", "--density", "--a", "--rc"})
+    if (given(fixed))
+      throw InputError(std::string(fixed) + " is fixed by scene bilayer (146 lipids + water, 10 x 10 x 18, rho 3)");
+  dpd::BilayerConfig c;
+  if (given("--steps")) c.steps = w.steps;
+  if (given("--equilibrate")) c.equilibrate = w.equilibrate;
+  c.warmup = std::min<std::int64_t>(c.warmup, c.equilibrate);
+  if (given("--dt")) c.dt = w.dt;
+  if (given("--lambda")) c.lambda = w.lambda;
+  if (given("--gamma")) c.gamma = w.gamma;
+  if (given("--kT")) c.kT = w.kT;
+  if (given("--skin")) c.skin = w.skin;
+  if (given("--seed")) c.seed = w.seed;
+  if (given("--init-seed")) c.init_seed = w.init_seed;
+  if (given("--sample-every")) c.sample_every = w.sample_every;
+  c.threads = w.threads;
+  c.pairs = given("--pairs") ? dpd::parse_pair_mode(pairs) : dpd::PairMode::cells;
+  c.generator = gen;
+  c.seeding = rng::parse_seeding(seeding);
+  c.distribution = rng::parse_distribution(distribution);
+  run_bilayer_scene(c, json, quiet, series_dir);
 }
 
 }  // namespace dpdrng::cli

@@ -90,6 +90,7 @@ void add_test(CLI::App& nist_app, nist::Test t) {
   a->test = t;
   CLI::App* sub = nist_app.add_subcommand(std::string(nist::test_cli_name(t)),
                                           "SP800-22 " + std::string(nist::test_name(t)) + " test");
+  sub->footer("One test with its own parameters; several streams also get the second-level assessment.");
   a->in.add_to(*sub);
   using T = nist::Test;
   switch (t) {

@@ -8,6 +8,7 @@
 #include <random>
 #include <set>
 
+#include "dpdrng/common/error.hpp"
 #include "dpdrng/dpd/bilayer.hpp"
 #include "dpdrng/dpd/bilayer_observables.hpp"
 #include "dpdrng/dpd/pair_forces.hpp"
@@ -105,6 +106,7 @@ struct Patch {
     cfg.lipids_per_leaflet = 2;
     cfg.particles = 60 + 40;
     cfg.water_gap = 3.0;
+    cfg.max_bond = 1.5;
     st = build_bilayer(cfg);
     std::mt19937_64 eng(5);
     std::uniform_real_distribution<double> u(-0.2, 0.2);

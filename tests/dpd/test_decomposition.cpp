@@ -172,8 +172,11 @@ TEST(Decomposition, PairStepSeedingAgreesBitForBitOnTheWaterScene) {
       // Not vacuous: the separations do differ, the numbers do not.
       EXPECT_GT(e.stats.separation_mismatch, 0u);
       EXPECT_EQ(e.stats.zeta_mismatch, 0u);
-      for (const auto& p : e.pairs)
-        if (p.in_a && p.in_b) ASSERT_EQ(bits(p.zeta_a), bits(p.zeta_b)) << p.i << "," << p.j;
+      for (const auto& p : e.pairs) {
+        if (p.in_a && p.in_b) {
+          ASSERT_EQ(bits(p.zeta_a), bits(p.zeta_b)) << p.i << "," << p.j;
+        }
+      }
     }
   }
 }

@@ -93,6 +93,7 @@ TEST(PairLoop, TappedWordsAreTheCanonicalPairsHash) {
   cfg.equilibrate = 1;
   cfg.generator = rng::validated({"tea32", 1});
   cfg.taps.raw_steps = {2};
+  cfg.threads = 1;
   cfg.taps.pairs = {{5, 40}};
   const RunResult r = run_water(cfg);
   ASSERT_EQ(r.taps.raw.size(), 1u);
@@ -160,6 +161,7 @@ TEST(Momentum, ConservedToRoundOff) {
     cfg.pairs = mode;
     cfg.generator = rng::validated({"tea64", 2});
     cfg.observables = false;
+    cfg.threads = 1;
     const RunResult r = run_water(cfg);
     ASSERT_TRUE(r.ok()) << r.status;
     EXPECT_LT(r.momentum_drift, 1e-11) << to_string(mode);

@@ -52,7 +52,8 @@ inline void tea_rounds2(V& a0, V& a1, V& b0, V& b1, const std::array<W, 4>& k, i
 inline void split_counters(std::uint64_t first, u32x16& lo, u32x16& hi) {
   constexpr u32x16 iota{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15};
   lo = lo32(first) + iota;
-  hi = hi32(first) + u32x16{} - reinterpret_cast<u32x16>(lo < lo32(first));  // true lanes are all ones
+  hi = hi32(first) + u32x16{};
+  if (lo32(first) > 0xffffffffu - 15) hi -= reinterpret_cast<u32x16>(lo < lo32(first));  // true lanes: all ones
 }
 
 // 16 (x1:x0) pairs joined into 64-bit words, little-endian order: the low word of each pair comes first.
@@ -197,6 +198,8 @@ void stream_batch(const Threefry2x64<R>& g, std::uint64_t start, std::uint64_t f
   std::size_t c = 0;
   for (; c + 8 <= calls; c += 8) {
     u64x8 x0 = (start + first + c) + iota + ks[0], x1 = u64x8{} + ks[1];
+    // Unrolled, the rotation counts become immediates (one vprolq each) and the injections lose their branch.
+#pragma GCC unroll 32
     for (int r = 0; r < rounds; ++r) {
       const int n = rot[r % 8];
       x0 += x1;
