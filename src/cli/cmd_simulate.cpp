@@ -9,6 +9,7 @@
 #include "dpdrng/cli/registry.hpp"
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/dpd/water.hpp"
+#include "bilayer_cli.hpp"
 
 namespace dpdrng::cli {
 namespace {
@@ -75,7 +76,7 @@ void print_human(const dpd::RunResult& r) {
 }
 
 void run_simulate(SimulateArgs& a) {
-  if (a.scene != "water") throw InputError("unknown scene '" + a.scene + "' (known: water)");
+  if (a.scene != "water") throw InputError("unknown scene '" + a.scene + "' (known: water, bilayer)");
   dpd::WaterConfig cfg = a.cfg;
   cfg.generator = a.gen.spec();
   cfg.pairs = dpd::parse_pair_mode(a.pairs);
@@ -106,7 +107,7 @@ const bool registered = register_command(40, [](CLI::App& root) {
       "numbers from one stream in a fixed pair order. --series DIR writes series.csv, velocity_pdf.csv,\n"
       "msd.csv and rdf.csv.");
   auto& c = a->cfg;
-  sub->add_option("--scene", a->scene, "scene: water")->capture_default_str();
+  sub->add_option("--scene", a->scene, "scene: water or bilayer (issue 7's membrane)")->capture_default_str();
   sub->add_option("--particles,-n", c.particles, "number of beads")->capture_default_str();
   sub->add_option("--density", c.density, "bead density rho")->capture_default_str();
   sub->add_option("--a", c.a, "conservative repulsion a_ij")->capture_default_str();
@@ -133,7 +134,12 @@ const bool registered = register_command(40, [](CLI::App& root) {
   sub->add_flag("--json", a->json, "machine-readable output");
   sub->add_flag("--quiet,-q", a->quiet, "no progress on stderr");
   sub->add_option("--series", a->series_dir, "directory for time series, histograms and g(r) (CSV)");
-  sub->callback([a] { run_simulate(*a); });
+  sub->callback([a, sub] {
+    if (a->scene == "bilayer")
+      return simulate_bilayer(*sub, a->cfg, a->gen.spec(), a->pairs, a->seeding, a->distribution, a->json, a->quiet,
+                              a->series_dir);
+    run_simulate(*a);
+  });
 });
 
 }  // namespace

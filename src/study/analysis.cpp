@@ -143,6 +143,17 @@ Comparison compare_curve(const CurveObservable& obs, const VariantReport& v, con
   return c;
 }
 
+// GSL's gsl_cdf_beta_Pinv gives NaN for some skewed cases (e.g. a = 792, b = 9); bisection on the CDF
+// cannot fail, and 60 halvings reach double precision on [0, 1].
+double beta_quantile(double q, double a, double b) {
+  double lo = 0, hi = 1;
+  for (int k = 0; k < 60; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (gsl_cdf_beta_P(mid, a, b) < q ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
 void summarise_passes(VariantReport& v, double alpha) {
   for (const char* test : {"chi2", "ttest"})
     for (const char* stream : {"x", "a", "b"}) {
@@ -161,9 +172,9 @@ void summarise_passes(VariantReport& v, double alpha) {
       // Clopper–Pearson 99 % interval and the exact binomial test against 1 − α.
       const double conf = 0.99;
       const double lo_q = (1 - conf) / 2;
-      p.ci_low = p.passed == 0 ? 0.0 : gsl_cdf_beta_Pinv(lo_q, double(p.passed), double(p.trials - p.passed + 1));
+      p.ci_low = p.passed == 0 ? 0.0 : beta_quantile(lo_q, double(p.passed), double(p.trials - p.passed + 1));
       p.ci_high = p.passed == p.trials ? 1.0
-                                       : gsl_cdf_beta_Pinv(1 - lo_q, double(p.passed + 1), double(p.trials - p.passed));
+                                       : beta_quantile(1 - lo_q, double(p.passed + 1), double(p.trials - p.passed));
       const double fails = double(p.trials - p.passed);
       // Two-sided by doubling the smaller tail (binomial in the failures, success probability α).
       if (p.trials > 0) {

@@ -104,6 +104,24 @@ TEST(StudyAnalysis, PassFractionsPoolReplicasAndKeepTea64OutputsApart) {
   EXPECT_NE(table.find("| tea64(1) distance | b |"), std::string::npos) << table;
 }
 
+TEST(StudyAnalysis, ClopperPearsonIntervalIsFiniteWhereGslPinvIsNot) {
+  // 792 of 800 passed: the case where gsl_cdf_beta_Pinv returned NaN for the lower bound. The exact 99 %
+  // interval lies below the normal approximation's 0.981 and must still contain 0.99.
+  const StudyConfig cfg = parse_config(kConfig, "c.toml");
+  auto cells = fake_cells(cfg, 0.0);
+  for (auto& c : cells) c.scalars["ttest.x.passed"] = c.cell.replica < 2 ? 396 : 0, c.scalars["ttest.x.trials"] =
+                                                          c.cell.replica < 2 ? 400 : 0;
+  const Analysis a = analyse(cfg, cells);
+  for (const auto& p : find(a, "tea32", 8).passes)
+    if (p.test == "ttest") {
+      EXPECT_EQ(p.passed, 792u);
+      EXPECT_TRUE(std::isfinite(p.ci_low));
+      EXPECT_NEAR(p.ci_high, 0.99678, 2e-4);
+      EXPECT_GT(p.ci_low, 0.97);
+      EXPECT_LT(p.ci_low, 0.98);
+    }
+}
+
 TEST(StudyAnalysis, BrokenCellsAreCountedNotAveraged) {
   const StudyConfig cfg = parse_config(kConfig, "c.toml");
   auto cells = fake_cells(cfg, 0.0);

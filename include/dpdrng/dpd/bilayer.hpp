@@ -67,7 +67,7 @@ struct BilayerConfig {
   int blocks = 5;  // production split into blocks for the thickness's standard error
   bool series = false;
   // Guards. A lipid has left the bilayer when the mean |z − z_mid| of its tail beads exceeds escape_distance
-  // (the hydrophobic core spans about ±2; heads sit near ±2.3).
+  // (the hydrophobic core spans about ±2; the head-density peaks sit near ±2.5).
   double escape_distance = 4.0;
   double max_temperature = 100.0, min_distance = 1e-5, max_bond = 2.0;
 
