@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "bilayer_cli.hpp"
+#include "csv_out.hpp"
 #include "dpdrng/cli/options.hpp"
 #include "dpdrng/cli/registry.hpp"
 #include "dpdrng/common/error.hpp"
@@ -15,34 +16,19 @@
 namespace dpdrng::cli {
 namespace {
 
-template <class T>
-void write_columns(const std::filesystem::path& path, const std::vector<std::string>& head,
-                   const std::vector<const std::vector<T>*>& cols) {
-  std::ofstream out(path);
-  if (!out) throw InputError("cannot write " + path.string());
-  for (std::size_t c = 0; c < head.size(); ++c) out << (c ? "," : "") << head[c];
-  out << "\n" << std::setprecision(10);
-  const std::size_t rows = cols.empty() ? 0 : cols[0]->size();
-  for (std::size_t r = 0; r < rows; ++r) {
-    for (std::size_t c = 0; c < cols.size(); ++c) out << (c ? "," : "") << (*cols[c])[r];
-    out << "\n";
-  }
-  if (!out) throw std::runtime_error("write failed: " + path.string());
-}
-
 void write_series(const std::filesystem::path& dir, const dpd::BilayerResult& r) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw InputError("cannot create " + dir.string() + ": " + ec.message());
   const auto& p = r.profile;
-  write_columns<double>(dir / "profile.csv", {"z", "head", "tail", "water"}, {&p.z, &p.head, &p.tail, &p.water});
+  write_csv(dir / "profile.csv", {"z", "head", "tail", "water"}, {&p.z, &p.head, &p.tail, &p.water});
   const auto& s = r.series;
   std::vector<double> step(s.step.begin(), s.step.end()), out(s.lipids_out.begin(), s.lipids_out.end());
-  write_columns<double>(dir / "series.csv", {"step", "temperature", "pxx", "pyy", "pzz", "tension", "tail_order", "lipids_out"},
+  write_csv(dir / "series.csv", {"step", "temperature", "pxx", "pyy", "pzz", "tension", "tail_order", "lipids_out"},
                         {&step, &s.temperature, &s.pxx, &s.pyy, &s.pzz, &s.tension, &s.tail_order, &out});
   std::vector<double> bond;
   for (std::size_t k = 0; k < r.order_by_bond.size(); ++k) bond.push_back(double(k + 1));
-  write_columns<double>(dir / "order.csv", {"tail_bond", "p2"}, {&bond, &r.order_by_bond});
+  write_csv(dir / "order.csv", {"tail_bond", "p2"}, {&bond, &r.order_by_bond});
 }
 
 std::string pm(const dpd::Stat& s) {

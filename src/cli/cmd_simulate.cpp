@@ -10,6 +10,7 @@
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/dpd/water.hpp"
 #include "bilayer_cli.hpp"
+#include "csv_out.hpp"
 
 namespace dpdrng::cli {
 namespace {
@@ -22,20 +23,6 @@ struct SimulateArgs {
   bool json = false, quiet = false;
   std::string series_dir;
 };
-
-void write_csv(const std::filesystem::path& path, const std::vector<std::string>& head,
-               const std::vector<const std::vector<double>*>& cols) {
-  std::ofstream out(path);
-  if (!out) throw InputError("cannot write " + path.string());
-  for (std::size_t c = 0; c < head.size(); ++c) out << (c ? "," : "") << head[c];
-  out << "\n" << std::setprecision(17);
-  const std::size_t rows = cols.empty() ? 0 : cols[0]->size();
-  for (std::size_t r = 0; r < rows; ++r) {
-    for (std::size_t c = 0; c < cols.size(); ++c) out << (c ? "," : "") << (*cols[c])[r];
-    out << "\n";
-  }
-  if (!out) throw std::runtime_error("write failed: " + path.string());
-}
 
 void write_series(const std::filesystem::path& dir, const dpd::RunResult& r) {
   std::error_code ec;
