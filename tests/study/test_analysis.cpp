@@ -12,25 +12,7 @@ using namespace dpdrng::study;
 
 namespace {
 
-const std::string kConfig = R"(
-[study]
-name = "analysis-test"
-replicas = 6
-[sweep]
-distributions = ["gauss"]
-[[sweep.generator]]
-name = "tea32"
-rounds = [1, 8]
-[[sweep.generator]]
-name = "tea64"
-rounds = [1]
-[scene]
-particles = 16
-steps = 20
-equilibrate = 2
-[tests]
-ttest_pairs = 2
-)";
+const std::string kConfig = fake::small_config_toml("analysis-test", 6);
 
 std::vector<CellResult> fake_cells(const StudyConfig& cfg, double shift) {
   fake::FakeMeasure m;

@@ -18,25 +18,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kConfig = R"(
-[study]
-name = "store-test"
-replicas = 3
-[sweep]
-distributions = ["gauss"]
-[[sweep.generator]]
-name = "tea32"
-rounds = [1, 8]
-[[sweep.generator]]
-name = "tea64"
-rounds = [1]
-[scene]
-particles = 16
-steps = 20
-equilibrate = 2
-[tests]
-ttest_pairs = 2
-)";
+const std::string kConfig = fake::small_config_toml("store-test", 3);
 
 struct TempDir {
   fs::path path;
