@@ -1,15 +1,22 @@
 #!/usr/bin/env bash
 # The README's test command: installs what is missing (Debian packages), builds, and runs the test suite.
-# DPDRNG_SANITIZE=1 also builds and runs the suite under AddressSanitizer + UBSan (CI does).
+# DPDRNG_SANITIZE=1 also builds and runs the whole suite under AddressSanitizer + UBSan (.ci/run sets it); any
+# failure in either build or either ctest run ends the script with a non-zero status.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./study/install-deps.sh
 jobs=$(nproc)
+step() { echo "== $1 ($SECONDS s so far)" >&2; }
+step "release build"
 cmake --preset release >/dev/null
 cmake --build --preset release -j "$jobs"
+step "release tests"
 ctest --preset release -j "$jobs"
 if [[ "${DPDRNG_SANITIZE:-0}" == 1 ]]; then
+  step "ASan+UBSan build"
   cmake --preset asan >/dev/null
   cmake --build --preset asan -j "$jobs"
+  step "ASan+UBSan tests"
   ctest --preset asan -j "$jobs"
 fi
+step "done"

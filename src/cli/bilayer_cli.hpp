@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "dpdrng/cli/options.hpp"
 #include "dpdrng/dpd/bilayer.hpp"
 #include "dpdrng/dpd/config.hpp"
 
@@ -15,8 +16,6 @@ void run_bilayer_scene(const dpd::BilayerConfig& cfg, bool json, bool quiet, con
 // `dpdrng simulate --scene bilayer`: the options of `simulate` that the user set explicitly (sub.count > 0)
 // override the scene's defaults; the water defaults do not leak in. --particles, --density, --a and --rc are
 // fixed by the scene (InputError if given). The warm-up is min(1 000, equilibrate) steps at dt 0.005.
-void simulate_bilayer(const CLI::App& sub, const dpd::WaterConfig& w, const rng::GeneratorSpec& gen,
-                      const std::string& pairs, const std::string& seeding, const std::string& distribution,
-                      bool json, bool quiet, const std::string& series_dir);
+void simulate_bilayer(const CLI::App& sub, const dpd::WaterConfig& w, const RunOptions& o);
 
 }  // namespace dpdrng::cli

@@ -184,10 +184,11 @@ void run_bench_dpd(const BenchDpdArgs& a) {
     return;
   }
   std::cout << "particle-steps/s (median of " << a.repeat << ", " << a.threads << " thread(s), " << a.distribution
-            << "); RNG share by difference against 'none'\n";
+            << ")\nRNG share by difference: 'vs none' against the table's zeta = 0 run, 'in-run' against zeta = 0\n"
+            << "force evaluations alternated with the run's own on its final state (timings.rng_share_estimate)\n";
   std::cout << std::left << std::setw(7) << "pairs" << std::setw(9) << "beads" << std::setw(20) << "noise"
-            << std::right << std::setw(14) << "p-steps/s" << std::setw(12) << "RNG share" << std::setw(12)
-            << "estimate" << "\n";
+            << std::right << std::setw(14) << "p-steps/s" << std::setw(12) << "vs none" << std::setw(12)
+            << "in-run" << "\n";
   double none_s = 0;
   for (const auto& m : table) {
     if (m.label.rfind("none", 0) == 0) none_s = m.median_s;

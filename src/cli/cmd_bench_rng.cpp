@@ -77,6 +77,7 @@ std::vector<Row> rows() {
   add("threefry2x64", 13);
   add("threefry2x64", 20);
   add("splitmix64", 1);
+  add("saru", 1);
   add("mt19937", 1);
   Row std64{"std::mt19937_64", GeneratorSpec{}, true};
   out.push_back(std64);
@@ -360,7 +361,7 @@ const bool registered = register_command(40, [](CLI::App& root) {
   CLI::App* sub = bench.add_subcommand("rng", "ns per 64-bit output for every generator and round count");
   sub->footer(
       "Rows: tea32/tea64 at 1,2,3,4,5,6,8,16,32 rounds, philox4x32 at 7 and 10, threefry2x64 at 13 and 20,\n"
-      "splitmix64, and the references mt19937 (the paper's) and std::mt19937_64.\n"
+      "splitmix64, saru, and the references mt19937 (the paper's) and std::mt19937_64.\n"
       "Modes: scalar = independent counter-mode calls one at a time, each output forced into a register, so\n"
       "the CPU may overlap calls but the compiler cannot vectorise them; batch = fill_stream() into a buffer\n"
       "(SIMD kernels for tea32, tea64, philox4x32, threefry2x64, splitmix64); scalar-/batch- uniform and gauss =\n"

@@ -61,10 +61,7 @@ void print_human(const dpd::BilayerResult& r) {
 
 struct BilayerArgs {
   dpd::BilayerConfig cfg;
-  GeneratorOptions gen;
-  std::string pairs = "cells", seeding = "distance", distribution = "gauss";
-  bool json = false, quiet = false;
-  std::string series_dir;
+  RunOptions run{"cells"};
 };
 
 const bool registered = register_command(41, [](CLI::App& root) {
@@ -79,33 +76,16 @@ const bool registered = register_command(41, [](CLI::App& root) {
   sub->add_option("--steps", c.steps, "steps in all (warm-up included)")->capture_default_str();
   sub->add_option("--equilibrate", c.equilibrate, "steps not sampled (warm-up included)")->capture_default_str();
   sub->add_option("--warmup", c.warmup, "first steps at --dt-warmup")->capture_default_str();
-  sub->add_option("--dt", c.dt, "time step after the warm-up")->capture_default_str();
-  sub->add_option("--dt-warmup", c.dt_warmup, "time step of the warm-up")->capture_default_str();
-  sub->add_option("--lambda", c.lambda, "Groot-Warren lambda")->capture_default_str();
-  sub->add_option("--gamma", c.gamma, "dissipative strength (sigma^2 = 2 gamma kT)")->capture_default_str();
-  sub->add_option("--kT", c.kT, "temperature k_BT")->capture_default_str();
-  sub->add_option("--pairs", a->pairs, "cells (Verlet lists) or all")
-      ->check(CLI::IsMember({"all", "cells"}))
-      ->capture_default_str();
-  sub->add_option("--skin", c.skin, "Verlet skin (cells)")->capture_default_str();
-  a->gen.add_to(*sub);
-  sub->add_option("--seeding", a->seeding, "distance (the paper) or pair-step")->capture_default_str();
-  sub->add_option("--distribution", a->distribution, "gauss (Box-Muller) or uniform (sqrt3(2u-1))")
-      ->capture_default_str();
-  sub->add_option("--seed", c.seed, "noise seed (pair-step key, mt19937 seed)")->capture_default_str();
-  sub->add_option("--init-seed", c.init_seed, "seed of the initial configuration")->capture_default_str();
-  sub->add_option("--threads", c.threads, "OpenMP threads (0 = default)")->capture_default_str();
-  sub->add_option("--sample-every", c.sample_every, "sampling interval of profiles and order")->capture_default_str();
-  sub->add_flag("--json", a->json, "machine-readable output");
-  sub->add_flag("--quiet,-q", a->quiet, "no progress on stderr");
-  sub->add_option("--series", a->series_dir, "directory for profiles and time series (CSV)");
+  add_real(*sub, "--dt", c.dt, "time step after the warm-up");
+  add_real(*sub, "--dt-warmup", c.dt_warmup, "time step of the warm-up");
+  add_thermostat_options(*sub, c);
+  a->run.add_to(*sub, c,
+                {"cells (Verlet lists) or all", "sampling interval of profiles and order",
+                 "directory for profiles and time series (CSV)"});
   sub->callback([a] {
     dpd::BilayerConfig cfg = a->cfg;
-    cfg.generator = a->gen.spec();
-    cfg.pairs = dpd::parse_pair_mode(a->pairs);
-    cfg.seeding = rng::parse_seeding(a->seeding);
-    cfg.distribution = rng::parse_distribution(a->distribution);
-    run_bilayer_scene(cfg, a->json, a->quiet, a->series_dir);
+    a->run.apply(cfg);
+    run_bilayer_scene(cfg, a->run.json, a->run.quiet, a->run.series_dir);
   });
 });
 
@@ -128,13 +108,12 @@ void run_bilayer_scene(const dpd::BilayerConfig& in, bool json, bool quiet, cons
     print_human(r);
 }
 
-void simulate_bilayer(const CLI::App& sub, const dpd::WaterConfig& w, const rng::GeneratorSpec& gen,
-                      const std::string& pairs, const std::string& seeding, const std::string& distribution,
-                      bool json, bool quiet, const std::string& series_dir) {
+void simulate_bilayer(const CLI::App& sub, const dpd::WaterConfig& w, const RunOptions& o) {
   auto given = [&](const char* name) { return sub.count(name) > 0; };
   for (const char* fixed : {"--particles", "--density", "--a", "--rc"})
     if (given(fixed))
       throw InputError(std::string(fixed) + " is fixed by scene bilayer (146 lipids + water, 10 x 10 x 18, rho 3)");
+  if (given("--integrator")) throw InputError("--integrator is for scene water (the bilayer integrates with mvv)");
   dpd::BilayerConfig c;
   if (given("--steps")) c.steps = w.steps;
   if (given("--equilibrate")) c.equilibrate = w.equilibrate;
@@ -148,11 +127,10 @@ void simulate_bilayer(const CLI::App& sub, const dpd::WaterConfig& w, const rng:
   if (given("--init-seed")) c.init_seed = w.init_seed;
   if (given("--sample-every")) c.sample_every = w.sample_every;
   c.threads = w.threads;
-  c.pairs = given("--pairs") ? dpd::parse_pair_mode(pairs) : dpd::PairMode::cells;
-  c.generator = gen;
-  c.seeding = rng::parse_seeding(seeding);
-  c.distribution = rng::parse_distribution(distribution);
-  run_bilayer_scene(c, json, quiet, series_dir);
+  RunOptions scene = o;
+  if (!given("--pairs")) scene.pairs = "cells";
+  scene.apply(c);
+  run_bilayer_scene(c, o.json, o.quiet, o.series_dir);
 }
 
 }  // namespace dpdrng::cli

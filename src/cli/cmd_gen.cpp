@@ -69,7 +69,8 @@ const bool registered = register_command(10, [](CLI::App& root) {
       "Call i hashes counter start+i. tea32: low word -> x0, high -> x1, output (x1'<<32)|x0'.\n"
       "tea64: x0 = start+i, x1 = 0, outputs a then b. philox4x32: counter (start+i, 0), key (k0, k1),\n"
       "outputs (c1:c0) then (c3:c2). threefry2x64: counter (start+i, 0), key (k1:k0, k3:k2).\n"
-      "splitmix64: the published stream seeded with start. mt19937: std::mt19937 seeded with\n"
+      "splitmix64: the published stream seeded with start. saru: Saru's two-seed constructor on\n"
+      "(lo32, hi32) of start+i, output (u2<<32)|u1 from its first two steps. mt19937: std::mt19937 seeded with\n"
       "lo32(start)^hi32(start), two draws a word, high first.\n"
       "raw = little-endian 64-bit words (dieharder -g 200, PractRand stdin64).");
   args->gen.add_to(*sub);

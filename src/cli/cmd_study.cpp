@@ -37,7 +37,8 @@ void run(const RunArgs& a) {
   const RunSummary s = run_study(config, store, o, measure_cell);
   const std::size_t stored = store.assemble(config);
   std::cerr << "[study] done in " << s.seconds << " s: " << s.computed << " computed, " << s.resumed << " resumed, "
-            << s.unstable << " unstable, " << s.failed << " failed; " << store.study_file() << " holds " << stored
+            << s.unstable << " unstable, " << (s.disrupted ? std::to_string(s.disrupted) + " disrupted, " : "")
+            << s.failed << " failed; " << store.study_file() << " holds " << stored
             << " of " << enumerate_cells(config).size() << " cells\n";
 }
 
@@ -77,7 +78,8 @@ void report(const std::string& dir, bool charts) {
 const bool registered = register_command(60, [](CLI::App& root) {
   CLI::App& g = group(root, "study", "run a sweep of DPD runs and tests, merge shards, and report");
   g.footer("A study: generators x rounds x distributions x seedings x replicas (x dt), each cell one DPD run with\n"
-           "its chi2 / lag-1 t / NIST tests and observables, compared with MT19937. See study/README.md.");
+           "its chi2 / lag-1 t / NIST tests and observables, compared with MT19937; [scene] name = \"bilayer\"\n"
+           "sweeps the membrane scene (physics only). See study/README.md.");
 
   auto ra = std::make_shared<RunArgs>();
   CLI::App* r = g.add_subcommand("run", "run the cells of a study config (resumes: finished cells are kept)");

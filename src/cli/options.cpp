@@ -1,5 +1,7 @@
 #include "dpdrng/cli/options.hpp"
 
+#include <cmath>
+
 #include "dpdrng/cli/registry.hpp"
 #include "dpdrng/common/error.hpp"
 
@@ -27,6 +29,53 @@ rng::GeneratorSpec GeneratorOptions::spec() const {
   if (rounds < 0 || (rounds == 0 && rounds_option != nullptr && rounds_option->count() > 0))
     throw InputError("--rounds must be at least 1 (omit it for the generator's default)");
   return rng::validated(s);
+}
+
+const CLI::Validator& finite_number() {
+  static const CLI::Validator v(
+      [](std::string& text) -> std::string {
+        double x = 0;
+        if (!CLI::detail::lexical_cast(text, x)) return "not a number: " + text;
+        return std::isfinite(x) ? "" : "must be a finite number, not " + text;
+      },
+      "");
+  return v;
+}
+
+CLI::Option* add_real(CLI::App& app, const std::string& name, double& value, const std::string& help) {
+  return app.add_option(name, value, help)->check(finite_number())->capture_default_str();
+}
+
+namespace {
+// Unsigned options: CLI11 would wrap "-1" around to 2^64 - 1 silently.
+const CLI::Validator& not_negative() {
+  static const CLI::Validator v(
+      [](std::string& text) -> std::string {
+        return text.find('-') == std::string::npos ? "" : "must not be negative: " + text;
+      },
+      "");
+  return v;
+}
+}  // namespace
+
+void RunOptions::add_noise_and_output(CLI::App& app, const Help& help, double& skin, std::uint64_t& seed,
+                                      std::uint64_t& init_seed, int& threads, int& sample_every) {
+  app.add_option("--pairs", pairs, help.pairs)->check(CLI::IsMember({"all", "cells"}))->capture_default_str();
+  add_real(app, "--skin", skin, "Verlet skin (cells)");
+  gen.add_to(app);
+  app.add_option("--seeding", seeding, "distance (the paper) or pair-step")->capture_default_str();
+  app.add_option("--distribution", distribution, "gauss (Box-Muller) or uniform (sqrt3(2u-1))")
+      ->capture_default_str();
+  app.add_option("--seed", seed, "noise seed (pair-step key, mt19937 seed)")->check(not_negative())
+      ->capture_default_str();
+  app.add_option("--init-seed", init_seed, "seed of the initial configuration")->check(not_negative())
+      ->capture_default_str();
+  app.add_option("--threads", threads, "OpenMP threads (0 = default); results are identical for any count")
+      ->capture_default_str();
+  app.add_option("--sample-every", sample_every, help.sample_every)->capture_default_str();
+  app.add_flag("--json", json, "machine-readable output");
+  app.add_flag("--quiet,-q", quiet, "no progress on stderr");
+  app.add_option("--series", series_dir, help.series);
 }
 
 }  // namespace dpdrng::cli

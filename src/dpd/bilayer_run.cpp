@@ -224,65 +224,35 @@ BilayerResult run_bilayer(const BilayerConfig& in, const RunHooks& hooks) {
   return r;
 }
 
-namespace {
-nlohmann::json stat(const Stat& s) { return {{"mean", s.mean}, {"std", s.std}, {"sem", s.sem}, {"n", s.n}}; }
-}  // namespace
-
 nlohmann::json to_json(const BilayerResult& r, bool arrays) {
   nlohmann::json j;
   j["scene"] = "bilayer";
-  j["status"] = r.status;
-  j["steps_done"] = r.steps_done;
-  j["generator"] = r.generator;
-  j["seeding"] = r.seeding;
-  j["distribution"] = r.distribution;
-  j["pairs"] = r.pairs;
-  j["particles"] = r.particles;
+  put_run_labels(j, r);
   j["lipids"] = r.lipids;
   j["box"] = r.box;
-  auto scalar = [&](const std::string& key, const Stat& s) {
-    j[key + "_mean"] = s.mean;
-    j[key + "_sem"] = s.sem;
-  };
-  scalar("temperature", r.temperature);
-  scalar("pressure", r.pressure);
-  scalar("pressure_xx", r.pressure_diag[0]);
-  scalar("pressure_yy", r.pressure_diag[1]);
-  scalar("pressure_zz", r.pressure_diag[2]);
-  j["membrane_tension"] = r.tension.mean;
-  j["membrane_tension_sem"] = r.tension.sem;
+  put_mean_sem(j, "temperature", r.temperature);
+  put_mean_sem(j, "pressure", r.pressure);
+  put_mean_sem(j, "pressure_xx", r.pressure_diag[0]);
+  put_mean_sem(j, "pressure_yy", r.pressure_diag[1]);
+  put_mean_sem(j, "pressure_zz", r.pressure_diag[2]);
+  put_value_sem(j, "membrane_tension", r.tension);
   j["membrane_tension_convention"] = "L_z [P_zz - (P_xx + P_yy)/2], positive = stretched";
-  j["membrane_tension_conservative"] = r.tension_conservative.mean;
-  j["membrane_tension_conservative_sem"] = r.tension_conservative.sem;
+  put_value_sem(j, "membrane_tension_conservative", r.tension_conservative);
   j["membrane_tension_without_bond_virial"] = r.tension_without_bond_virial.mean;
   j["membrane_tension_without_bend_virial"] = r.tension_without_bend_virial.mean;
-  j["bilayer_thickness"] = r.thickness.mean;
-  j["bilayer_thickness_sem"] = r.thickness.sem;
-  j["head_separation"] = r.head_separation.mean;
-  j["head_separation_sem"] = r.head_separation.sem;
-  j["tail_order"] = r.tail_order.mean;
-  j["tail_order_sem"] = r.tail_order.sem;
+  put_value_sem(j, "bilayer_thickness", r.thickness);
+  put_value_sem(j, "head_separation", r.head_separation);
+  put_value_sem(j, "tail_order", r.tail_order);
   j["lipids_out_max"] = r.lipids_out_max;
   j["momentum_drift_per_bead"] = r.momentum_drift;
   j["momentum_final"] = r.momentum_final;
-  j["temperature"] = stat(r.temperature);
-  j["tension"] = stat(r.tension);
-  j["thickness"] = stat(r.thickness);
-  j["tail_order_stat"] = stat(r.tail_order);
-  for (int a = 0; a < 3; ++a) j["pressure_diag"].push_back(stat(r.pressure_diag[a]));
-  const Timings& t = r.timings;
-  j["timings"] = {{"total_s", t.total_s},
-                  {"force_s", t.force_s},
-                  {"bonded_s", r.bonded_s},
-                  {"per_step_s", t.per_step_s},
-                  {"particle_steps_per_s", t.particle_steps_per_s},
-                  {"random_numbers", t.random_numbers},
-                  {"zetas", t.zetas},
-                  {"ns_per_number", t.ns_per_number},
-                  {"ns_per_zeta", t.ns_per_zeta},
-                  {"rng_share_estimate", t.rng_share_estimate},
-                  {"list_builds", t.list_builds},
-                  {"threads", t.threads}};
+  j["temperature"] = to_json(r.temperature);
+  j["tension"] = to_json(r.tension);
+  j["thickness"] = to_json(r.thickness);
+  j["tail_order_stat"] = to_json(r.tail_order);
+  for (int a = 0; a < 3; ++a) j["pressure_diag"].push_back(to_json(r.pressure_diag[a]));
+  j["timings"] = timings_json(r.timings);
+  j["timings"]["bonded_s"] = r.bonded_s;
   if (!arrays) return j;
   j["order_by_bond"] = r.order_by_bond;
   j["profile"] = {{"z", r.profile.z}, {"head", r.profile.head}, {"tail", r.profile.tail},

@@ -15,6 +15,14 @@ PairMode parse_pair_mode(std::string_view name) {
 
 std::string_view to_string(PairMode m) { return m == PairMode::all ? "all" : "cells"; }
 
+Integrator parse_integrator(std::string_view name) {
+  if (name == "mvv") return Integrator::mvv;
+  if (name == "shardlow") return Integrator::shardlow;
+  throw InputError("unknown integrator '" + std::string(name) + "' (known: mvv, shardlow)");
+}
+
+std::string_view to_string(Integrator i) { return i == Integrator::mvv ? "mvv" : "shardlow"; }
+
 double WaterConfig::box_length() const { return std::cbrt(particles / density); }
 
 namespace {
@@ -47,6 +55,7 @@ void WaterConfig::validate() const {
   // Minimum image gives each pair once only if the box is wider than two cut-offs.
   if (!(box_length() > 2 * rc))
     bad("particles/density", "box length " + std::to_string(box_length()) + " must exceed 2*rc");
+  finite(skin, "skin");  // unused with pairs=all, but a non-finite value is a mistake either way
   if (pairs == PairMode::cells) positive(skin, "skin");
   rng::validated(generator);  // names the generator and its round range in the error
   if (seeding == rng::Seeding::counter) bad("seeding", "'counter' makes streams; pair noise needs distance or pair-step");
@@ -66,6 +75,10 @@ void WaterConfig::validate() const {
   for (auto [i, j] : taps.pairs)
     if (!(i < j) || j >= static_cast<std::uint32_t>(particles))
       bad("taps.pairs", "(" + std::to_string(i) + ", " + std::to_string(j) + ") needs i < j < particles");
+  if (integrator == Integrator::shardlow && (!taps.raw_steps.empty() || !taps.pairs.empty()))
+    bad("integrator", "shardlow draws its numbers in its own sweep; taps need mvv");
+  if (integrator == Integrator::shardlow && noise_override != NoiseOverride::off)
+    bad("integrator", "shardlow has no noise override (a benchmark of the mvv pair loop)");
   if (!taps.pairs.empty() && generator.name == "mt19937" && pairs == PairMode::cells)
     bad("taps.pairs", "mt19937 gives a pair a number only while it is listed; tap pair series with pairs=all");
 }

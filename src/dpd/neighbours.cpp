@@ -45,62 +45,57 @@ void CellGrid::stencil(int c, int out[27]) const {
       }
 }
 
-template <bool Fill>
-std::uint32_t VerletList::scan_row(const System& s, std::uint32_t i, double rl2, std::uint32_t* out) const {
-  const double Lx = s.box.L[0], Ly = s.box.L[1], Lz = s.box.L[2];
-  const double hx = Lx / 2, hy = Ly / 2, hz = Lz / 2;
-  const double xi = s.x[i], yi = s.y[i], zi = s.z[i];
-  std::uint32_t n = 0;
-  auto consider = [&](std::uint32_t j) {
-    const double dx = min_image(s.x[j] - xi, Lx, hx), dy = min_image(s.y[j] - yi, Ly, hy),
-                 dz = min_image(s.z[j] - zi, Lz, hz);
-    if (dx * dx + dy * dy + dz * dz < rl2) {
-      if constexpr (Fill) out[n] = j;
-      ++n;
-    }
-  };
-  if (!grid_.usable()) {
-    for (std::uint32_t j = i + 1; j < s.size(); ++j) consider(j);
-    return n;
+void SortedCells::build(const System& s, double rc) {
+  // The smallest counts for which the 13 forward neighbours are distinct cells; z needs an even count so
+  // that layers of one colour never write to the same layer.
+  constexpr int kMin[3] = {3, 3, 4};
+  int n[3];
+  bool grid = true;
+  for (int d = 0; d < 3; ++d) {
+    n[d] = static_cast<int>(std::floor(s.box.L[d] / rc));
+    if (d == 2) n[d] -= n[d] % 2;
+    grid = grid && n[d] >= kMin[d];
   }
-  int cells[27];
-  grid_.stencil(grid_.cell_of(xi, yi, zi), cells);
-  const auto& start = grid_.start();
-  const auto& beads = grid_.beads();
-  for (int c : cells)
-    for (std::uint32_t k = start[c]; k < start[c + 1]; ++k)
-      if (beads[k] > i) consider(beads[k]);
-  return n;
-}
+  if (!grid) n[0] = n[1] = n[2] = 1;
+  const bool reshaped = n[0] != n_[0] || n[1] != n_[1] || n[2] != n_[2] || builds_ == 0;
+  for (int d = 0; d < 3; ++d) n_[d] = n[d], inv_w_[d] = n[d] / s.box.L[d];
+  ncell_ = n[0] * n[1] * n[2];
 
-void VerletList::build(const System& s, double rc, int threads) {
-  const double rl = rc + skin;
-  grid_.build(s, rl);
-  const std::size_t n = s.size();
-  offset_.assign(n + 1, 0);
-  const double rl2 = rl * rl;
-#pragma omp parallel for num_threads(threads) schedule(static)
-  for (std::size_t i = 0; i < n; ++i) offset_[i + 1] = scan_row<false>(s, std::uint32_t(i), rl2, nullptr);
-  for (std::size_t i = 0; i < n; ++i) offset_[i + 1] += offset_[i];
-  j_.resize(offset_[n]);
-#pragma omp parallel for num_threads(threads) schedule(static)
-  for (std::size_t i = 0; i < n; ++i) scan_row<true>(s, std::uint32_t(i), rl2, j_.data() + offset_[i]);
-  x0_ = s.x;
-  y0_ = s.y;
-  z0_ = s.z;
+  const std::size_t beads = s.size();
+  cell_.resize(beads);
+  order_.resize(beads);
+  start_.assign(std::size_t(ncell_) + 1, 0);
+  for (std::size_t i = 0; i < beads; ++i) {
+    // Positions are wrapped into [0, L); the clamps only guard x·n/L rounding to n (or a stray −0).
+    int c[3];
+    const double r[3] = {s.x[i], s.y[i], s.z[i]};
+    for (int d = 0; d < 3; ++d) c[d] = std::clamp(static_cast<int>(r[d] * inv_w_[d]), 0, n_[d] - 1);
+    cell_[i] = static_cast<std::uint32_t>((c[2] * n_[1] + c[1]) * n_[0] + c[0]);
+    ++start_[cell_[i] + 1];
+  }
+  for (int c = 0; c < ncell_; ++c) start_[c + 1] += start_[c];
+  for (std::size_t i = 0; i < beads; ++i) order_[start_[cell_[i]]++] = static_cast<std::uint32_t>(i);
+  for (int c = ncell_; c > 0; --c) start_[c] = start_[c - 1];  // the fill advanced every start to its end
+  start_[0] = 0;
+  if (reshaped) fill_forward();
   ++builds_;
 }
 
-bool VerletList::stale(const System& s) const {
-  if (x0_.size() != s.size()) return true;
-  const double lim2 = 0.25 * skin * skin;
-  const double Lx = s.box.L[0], Ly = s.box.L[1], Lz = s.box.L[2];
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    const double dx = min_image(s.x[i] - x0_[i], Lx, Lx / 2), dy = min_image(s.y[i] - y0_[i], Ly, Ly / 2),
-                 dz = min_image(s.z[i] - z0_[i], Lz, Lz / 2);
-    if (dx * dx + dy * dy + dz * dz > lim2) return true;
+void SortedCells::fill_forward() {
+  forward_.assign(gridded() ? std::size_t(ncell_) * kForward : 0, 0);
+  if (!gridded()) return;
+  for (int c = 0; c < ncell_; ++c) {
+    const int cx = c % n_[0], cy = (c / n_[0]) % n_[1], cz = c / (n_[0] * n_[1]);
+    std::int32_t* out = forward_.data() + std::size_t(c) * kForward;
+    int k = 0;
+    for (int dz = 0; dz <= 1; ++dz)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          if (dz == 0 && (dy < 0 || (dy == 0 && dx <= 0))) continue;
+          const int x = (cx + dx + n_[0]) % n_[0], y = (cy + dy + n_[1]) % n_[1], z = (cz + dz) % n_[2];
+          out[k++] = (z * n_[1] + y) * n_[0] + x;
+        }
   }
-  return false;
 }
 
 }  // namespace dpdrng::dpd

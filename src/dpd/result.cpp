@@ -33,56 +33,59 @@ Stat make_stat(const std::vector<double>& x) {
   return s;
 }
 
-namespace {
-nlohmann::json stat(const Stat& s) { return {{"mean", s.mean}, {"std", s.std}, {"sem", s.sem}, {"n", s.n}}; }
-}  // namespace
+nlohmann::json to_json(const Stat& s) { return {{"mean", s.mean}, {"std", s.std}, {"sem", s.sem}, {"n", s.n}}; }
+
+nlohmann::json timings_json(const Timings& t) {
+  return {{"total_s", t.total_s},
+          {"force_s", t.force_s},
+          {"per_step_s", t.per_step_s},
+          {"particle_steps_per_s", t.particle_steps_per_s},
+          {"random_numbers", t.random_numbers},
+          {"zetas", t.zetas},
+          {"ns_per_number", t.ns_per_number},
+          {"ns_per_zeta", t.ns_per_zeta},
+          {"rng_share_estimate", t.rng_share_estimate},
+          {"list_builds", t.list_builds},
+          {"threads", t.threads}};
+}
+
+void put_mean_sem(nlohmann::json& j, const std::string& key, const Stat& s) {
+  j[key + "_mean"] = s.mean;
+  j[key + "_sem"] = s.sem;
+}
+
+void put_value_sem(nlohmann::json& j, const std::string& key, const Stat& s) {
+  j[key] = s.mean;
+  j[key + "_sem"] = s.sem;
+}
 
 nlohmann::json to_json(const RunResult& r, bool arrays) {
   nlohmann::json j;
-  j["status"] = r.status;
-  j["steps_done"] = r.steps_done;
-  j["generator"] = r.generator;
-  j["seeding"] = r.seeding;
-  j["distribution"] = r.distribution;
-  j["pairs"] = r.pairs;
-  j["particles"] = r.particles;
+  put_run_labels(j, r);
+  j["integrator"] = r.integrator;
   j["box_length"] = r.box_length;
-  j["temperature_mean"] = r.temperature.mean;
+  put_mean_sem(j, "temperature", r.temperature);
   j["temperature_std"] = r.temperature.std;
-  j["temperature_sem"] = r.temperature.sem;
-  j["pressure_mean"] = r.pressure.mean;
-  j["pressure_sem"] = r.pressure.sem;
-  j["pressure_conservative_mean"] = r.pressure_conservative.mean;
-  j["pressure_conservative_sem"] = r.pressure_conservative.sem;
+  put_mean_sem(j, "pressure", r.pressure);
+  put_mean_sem(j, "pressure_conservative", r.pressure_conservative);
   j["diffusion_coefficient"] = r.msd.diffusion;
   j["diffusion_coefficient_sem"] = r.msd.diffusion_sem;
   j["velocity_pdf_error_rate"] = r.velocity_pdf.error_rate_kT_mean;
   j["velocity_pdf_error_rate_measured_T"] = r.velocity_pdf.error_rate_measured_mean;
   j["momentum_drift_per_bead"] = r.momentum_drift;
-  j["temperature"] = stat(r.temperature);
-  j["pressure"] = stat(r.pressure);
-  j["pressure_conservative"] = stat(r.pressure_conservative);
+  j["temperature"] = to_json(r.temperature);
+  j["pressure"] = to_json(r.pressure);
+  j["pressure_conservative"] = to_json(r.pressure_conservative);
   for (int a = 0; a < 3; ++a) {
-    j["pressure_diag"].push_back(stat(r.pressure_diag[a]));
-    j["pressure_conservative_diag"].push_back(stat(r.pressure_conservative_diag[a]));
+    j["pressure_diag"].push_back(to_json(r.pressure_diag[a]));
+    j["pressure_conservative_diag"].push_back(to_json(r.pressure_conservative_diag[a]));
   }
   j["momentum_final"] = r.momentum_final;
   j["velocity_pdf_error_rate_xyz"] = r.velocity_pdf.error_rate_kT;
   j["msd_fit"] = {{"from", r.msd.fit_from}, {"to", r.msd.fit_to}};
-  const Timings& t = r.timings;
-  j["timings"] = {{"total_s", t.total_s},
-                  {"force_s", t.force_s},
-                  {"per_step_s", t.per_step_s},
-                  {"particle_steps_per_s", t.particle_steps_per_s},
-                  {"production_s", t.production_s},
-                  {"production_particle_steps_per_s", t.production_particle_steps_per_s},
-                  {"random_numbers", t.random_numbers},
-                  {"zetas", t.zetas},
-                  {"ns_per_number", t.ns_per_number},
-                  {"ns_per_zeta", t.ns_per_zeta},
-                  {"rng_share_estimate", t.rng_share_estimate},
-                  {"list_builds", t.list_builds},
-                  {"threads", t.threads}};
+  j["timings"] = timings_json(r.timings);
+  j["timings"]["production_s"] = r.timings.production_s;
+  j["timings"]["production_particle_steps_per_s"] = r.timings.production_particle_steps_per_s;
   if (!arrays) return j;
   const VelocityPdf& p = r.velocity_pdf;
   j["velocity_pdf"] = {{"v", p.v}, {"x", p.pdf[0]}, {"y", p.pdf[1]}, {"z", p.pdf[2]},

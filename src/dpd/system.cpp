@@ -15,6 +15,12 @@ namespace {
 // floor() rather than one conditional subtraction: a runaway bead may cross several images in one step.
 inline void wrap1(double& x, std::int32_t& img, double L) {
   if (x >= 0 && x < L) return;
+  // A blown-up bead (non-finite, or so far out that the image count would overflow): park it at 0 so the
+  // invariant x in [0, L) that cell lists index by still holds; the run's stability check stops the run.
+  if (!(std::abs(x) < 1e9 * L)) {
+    x = 0;
+    return;
+  }
   const double k = std::floor(x / L);
   x -= k * L;
   img += static_cast<std::int32_t>(k);

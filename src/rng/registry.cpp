@@ -23,6 +23,11 @@ constexpr std::array kGenerators{
                   "Threefry2x64-R from Random123: 128-bit counter, 128-bit key, 128-bit output", true},
     GeneratorInfo{"splitmix64", 1, 1, 1, "fixed finaliser, no round parameter; passes BigCrush (Steele et al. 2014)",
                   "SplitMix64: Weyl sequence (gamma 0x9e3779b97f4a7c15) through Stafford's mix13 finaliser", true},
+    GeneratorInfo{"saru", 1, 1, 1,
+                  "fixed, no round parameter; its author reports the stream passes BigCrush (Afshar et al. 2013)",
+                  "Saru (Worley 2008), HOOMD-blue v2's DPD noise: 1-3 seed words hashed to (LCG, Weyl) state, "
+                  "2 outputs per word",
+                  true},
     GeneratorInfo{"mt19937", 1, 1, 1, "the reference; no round parameter",
                   "MT19937 (32-bit, std::mt19937 = gsl_rng_mt19937); two draws make a 64-bit word, high first",
                   false},

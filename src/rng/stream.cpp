@@ -32,45 +32,38 @@ void fill_hash(const G& g, std::uint64_t start, std::uint64_t offset, std::span<
   }
 }
 
-using simd::f64x8;
-using simd::u64x8;
-
-f64x8 to_double(u64x8 w) { return __builtin_convertvector(w, f64x8); }
-
-// The same operations, in the same order, as the scalar draw<> in distribution.hpp (no contraction in ISO
-// mode), so that uniform lanes equal the scalar values bit for bit and Gaussian lanes differ only by log/cos.
 template <int W>
-f64x8 map_block(Distribution dist, const std::uint64_t* words) {
-  u64x8 w0, w1;
-  if constexpr (W == 1) {
-    w0 = simd::load<u64x8>(words);
-    w1 = w0;
-  } else {
-    const u64x8 a = simd::load<u64x8>(words), b = simd::load<u64x8>(words + 8);
-    w0 = __builtin_shufflevector(a, b, 0, 2, 4, 6, 8, 10, 12, 14);
-    w1 = __builtin_shufflevector(a, b, 1, 3, 5, 7, 9, 11, 13, 15);
-  }
-  if (dist == Distribution::uniform) return std::numbers::sqrt3 * (2.0 * (to_double(w0 >> 11) * 0x1p-53) - 1.0);
-  f64x8 u1, u2;
-  if constexpr (W == 1) {
-    u1 = (to_double(w0 & 0xffffffffu) + 1.0) * 0x1p-32;
-    u2 = to_double(w0 >> 32) * 0x1p-32;
-  } else {
-    u1 = to_double((w0 >> 11) + 1) * 0x1p-53;
-    u2 = to_double(w1 >> 11) * 0x1p-53;
-  }
-  return simd::sqrt(-2.0 * simd::log_unit(u1)) * simd::cos_2pi(u2);
+std::array<std::uint64_t, W> block_at(const std::uint64_t* words, std::size_t call) {
+  std::array<std::uint64_t, W> b;
+  for (int w = 0; w < W; ++w) b[w] = words[W * call + w];
+  return b;
 }
 
+// Plain loops over the scalar draw's own functions, which GCC vectorises at -O3, so every number equals the
+// scalar draw<> bit for bit. A loop calling std::sqrt does not vectorise (libm's sqrt may set errno), so the
+// Gaussian goes eight calls at a time: a vectorised loop for −2·log u1 and cos(2π·u2), then the SIMD sqrt
+// (correctly rounded, like std::sqrt). Blocks of eight, not two passes over the chunk, let the out-of-order
+// core run one block's sqrt on the divider while the next block's polynomials use the FMA units.
 template <int W>
 void map_words(Distribution dist, std::span<const std::uint64_t> words, std::span<double> out) {
+  const std::uint64_t* w = words.data();
+  double* o = out.data();
+  const std::size_t n = out.size();
+  if (dist == Distribution::uniform) {
+    for (std::size_t c = 0; c < n; ++c) o[c] = uniform_unit_variance(block_at<W>(w, c));
+    return;
+  }
   std::size_t c = 0;
-  for (; c + 8 <= out.size(); c += 8) simd::store(out.data() + c, map_block<W>(dist, words.data() + W * c));
-  if (c == out.size()) return;
-  std::array<std::uint64_t, 8 * W> tail{};  // pad the last block; its spare lanes are computed and dropped
-  std::copy(words.begin() + W * c, words.begin() + W * out.size(), tail.begin());
-  const f64x8 v = map_block<W>(dist, tail.data());
-  for (std::size_t i = 0; c + i < out.size(); ++i) out[c + i] = v[i];
+  for (; c + 8 <= n; c += 8) {
+    alignas(64) double radius2[8], cosine[8];
+    for (std::size_t j = 0; j < 8; ++j) {
+      const BoxMullerParts p = box_muller_parts(block_at<W>(w, c + j));
+      radius2[j] = p.radius2;
+      cosine[j] = p.cosine;
+    }
+    simd::store(o + c, simd::sqrt(simd::load<simd::f64x8>(radius2)) * simd::load<simd::f64x8>(cosine));
+  }
+  for (; c < n; ++c) o[c] = box_muller(block_at<W>(w, c));
 }
 
 template <class G>

@@ -54,6 +54,19 @@ struct CurveObservable {
 };
 constexpr CurveObservable kCurves[] = {{"vpdf_vs_mt", "vpdf/p", 0.01, true}, {"rdf_vs_mt", "rdf/g", 0.1, false}};
 
+// The membrane's structure as curves: bins where the reference's density is below a tenth of its peak (the
+// empty core for water, the bulk water for tails) are left out.
+constexpr CurveObservable kBilayerCurves[] = {{"head_profile_vs_mt", "profile/head", 0.1, true},
+                                              {"tail_profile_vs_mt", "profile/tail", 0.1, true},
+                                              {"water_profile_vs_mt", "profile/water", 0.1, true}};
+
+std::map<int, double> by_replica(const std::vector<const CellResult*>& cells, const std::string& name) {
+  std::map<int, double> m;
+  for (const auto* c : cells)
+    if (c->has(name) && std::isfinite(c->scalar(name, NAN))) m[c->cell.replica] = c->scalar(name, NAN);
+  return m;
+}
+
 std::vector<double> values_of(const std::vector<const CellResult*>& cells, const std::string& name) {
   std::vector<double> v;
   for (const auto* c : cells)
@@ -83,6 +96,23 @@ Comparison compare_scalar(const std::string& name, bool absolute, const VariantR
       std::isfinite(c.ref_sd) ? c.ref_sd * std::sqrt(1.0 / double(c.n) + 1.0 / double(c.n_ref)) / scale : NAN;
   c.p_value = welch_p(x, y);
   if (!std::isfinite(c.p_value)) c.note = "too few replicas for a P-value";
+  return c;
+}
+
+// The water report's scalar comparison in absolute units (a tensionless membrane's Σ is near 0, so ratios mean
+// nothing), with the paired t-test across replicas in place of Welch's: same MT-vs-MT noise floor.
+Comparison compare_paired(const std::string& base, const VariantReport& v, const VariantReport& ref) {
+  const std::string name = base + "_mean";
+  Comparison c = compare_scalar(name, true, v, ref);
+  c.observable = base;
+  if (!c.available) return c;
+  const PairedTest t = paired_test(by_replica(v.cells, name), by_replica(ref.cells, name));
+  c.paired = true;
+  c.n_pairs = t.n;
+  c.diff = t.diff;
+  c.diff_ci = t.ci95;
+  c.p_value = t.p_value;
+  c.note = std::isfinite(t.p_value) ? "" : "too few paired replicas for a P-value";
   return c;
 }
 
@@ -252,6 +282,54 @@ double curve_error(const std::vector<double>& curve, const std::vector<double>& 
   return n ? s / double(n) : NAN;
 }
 
+const std::vector<BilayerObservable>& bilayer_observables() {
+  static const std::vector<BilayerObservable> obs = {
+      {"temperature", "T", "kinetic temperature k_BT"},
+      {"pressure_xx", "P_xx", "pressure tensor P_xx"},
+      {"pressure_yy", "P_yy", "pressure tensor P_yy"},
+      {"pressure_zz", "P_zz", "pressure tensor P_zz (normal to the membrane)"},
+      {"tension", "Σ", "tension L_z[P_zz − (P_xx+P_yy)/2]"},
+      {"thickness", "thickness", "head-density peak to peak"},
+      {"tail_order", "order", "tail order P2 against z"},
+  };
+  return obs;
+}
+
+ReplicaMean replica_mean(const std::vector<const CellResult*>& cells, const std::string& name,
+                         const std::string& sem_name) {
+  ReplicaMean r;
+  std::vector<double> v;
+  const CellResult* only = nullptr;
+  for (const auto* c : cells)
+    if (c->has(name) && std::isfinite(c->scalar(name, NAN))) v.push_back(c->scalar(name, NAN)), only = c;
+  r.n = v.size();
+  if (v.empty()) return r;
+  r.mean = mean(v);
+  if (v.size() >= 2) {
+    r.ci95 = gsl_cdf_tdist_Qinv(0.025, double(v.size() - 1)) * sd(v) / std::sqrt(double(v.size()));
+  } else if (only->has(sem_name)) {
+    r.ci95 = 1.959963984540054 * only->scalar(sem_name, NAN);
+    r.from_run_sem = true;
+  }
+  return r;
+}
+
+PairedTest paired_test(const std::map<int, double>& x, const std::map<int, double>& y) {
+  std::vector<double> d;
+  for (const auto& [rep, v] : x)
+    if (auto it = y.find(rep); it != y.end()) d.push_back(v - it->second);
+  PairedTest t;
+  t.n = d.size();
+  if (d.empty()) return t;
+  t.diff = mean(d);
+  if (d.size() < 2) return t;
+  const double se = sd(d) / std::sqrt(double(d.size()));
+  const double dof = double(d.size() - 1);
+  t.ci95 = gsl_cdf_tdist_Qinv(0.025, dof) * se;
+  t.p_value = se > 0 ? 2 * gsl_cdf_tdist_Q(std::abs(t.diff) / se, dof) : (t.diff == 0 ? 1.0 : 0.0);
+  return t;
+}
+
 double welch_p(const std::vector<double>& x, const std::vector<double>& y) {
   if (x.size() < 2 || y.size() < 2) return NAN;
   const double vx = std::pow(sd(x), 2) / double(x.size()), vy = std::pow(sd(y), 2) / double(y.size());
@@ -271,6 +349,7 @@ const VariantReport* Analysis::reference_for(const VariantKey& k) const {
 Analysis analyse(const StudyConfig& config, const std::vector<CellResult>& cells) {
   Analysis a;
   a.alpha = config.tests.alpha;
+  a.bilayer = config.scene.is_bilayer();
   // Variants in sweep order (reference first), whatever order the cells were stored in.
   std::vector<VariantKey> order;
   for (const auto& c : enumerate_cells(config)) {
@@ -296,6 +375,11 @@ Analysis analyse(const StudyConfig& config, const std::vector<CellResult>& cells
     if (v.key.reference) continue;
     const VariantReport* ref = a.reference_for(v.key);
     if (!ref) continue;
+    if (a.bilayer) {
+      for (const auto& o : bilayer_observables()) v.observables.push_back(compare_paired(o.name, v, *ref));
+      for (const auto& c : kBilayerCurves) v.observables.push_back(compare_curve(c, v, *ref));
+      continue;
+    }
     for (const auto& s : kScalars) v.observables.push_back(compare_scalar(s.name, s.absolute, v, *ref));
     for (const auto& c : kCurves) v.observables.push_back(compare_curve(c, v, *ref));
   }

@@ -9,6 +9,7 @@
 #include <toml++/toml.h>
 
 #include "dpdrng/common/error.hpp"
+#include "dpdrng/dpd/bilayer.hpp"
 #include "dpdrng/rng/registry.hpp"
 
 namespace dpdrng::study {
@@ -176,6 +177,41 @@ const rng::GeneratorInfo& known_generator(Section& s, const std::string& key, co
   }
 }
 
+// The bilayer scene fixes its box, composition and a_ij (dpd::BilayerConfig); the study may set the rest.
+SceneParams bilayer_scene_defaults() {
+  const dpd::BilayerConfig b;
+  SceneParams s;
+  s.name = "bilayer";
+  s.particles = b.particles;
+  s.density = b.particles / (b.box[0] * b.box[1] * b.box[2]);
+  s.a = 0;
+  s.gamma = b.gamma;
+  s.kT = b.kT;
+  s.lambda = b.lambda;
+  s.dt = {b.dt};
+  s.steps = b.steps;
+  s.equilibrate = b.equilibrate;
+  s.pairs = std::string(dpd::to_string(b.pairs));
+  return s;
+}
+
+// particles and density both appear in the config (as for water), but the box is the scene's: they must agree.
+void check_bilayer_box(Section& sc, const SceneParams& s) {
+  const dpd::BilayerConfig b;
+  const double volume = b.box[0] * b.box[1] * b.box[2];
+  if (std::abs(s.particles - s.density * volume) > 0.5) {
+    std::ostringstream msg;
+    msg << s.particles << " beads at density " << s.density << " do not fill the bilayer scene's fixed box "
+        << b.box[0] << " x " << b.box[1] << " x " << b.box[2] << " (volume " << volume << "; e.g. "
+        << std::lround(s.density * volume) << " beads at this density)";
+    sc.fail("particles", msg.str());
+  }
+  const long lipid_beads = 2L * b.lipids_per_leaflet * dpd::kLipidBeads;
+  if (s.particles < lipid_beads)
+    sc.fail("particles", std::to_string(s.particles) + " is fewer than the " + std::to_string(lipid_beads) +
+                             " beads of the scene's lipids");
+}
+
 }  // namespace
 
 std::string fnv1a64_hex(const std::string& text) {
@@ -190,6 +226,13 @@ std::string fnv1a64_hex(const std::string& text) {
 }
 
 nlohmann::json StudyConfig::canonical() const {
+  // Keys are only ever added for new scenes: a changed canonical form of a water config would change its hash,
+  // and existing result directories would refuse to resume or report.
+  nlohmann::json scene_json = {{"name", scene.name},   {"particles", scene.particles}, {"density", scene.density},
+                               {"gamma", scene.gamma}, {"kT", scene.kT},               {"lambda", scene.lambda},
+                               {"dt", scene.dt},       {"steps", scene.steps},         {"equilibrate", scene.equilibrate},
+                               {"pairs", scene.pairs}};
+  if (!scene.is_bilayer()) scene_json["a"] = scene.a;  // the bilayer's a_ij are fixed by the scene
   nlohmann::json gens = nlohmann::json::array();
   for (const auto& g : generators) gens.push_back({{"name", g.name}, {"rounds", g.rounds}, {"seedings", g.seedings}});
   return {
@@ -200,10 +243,7 @@ nlohmann::json StudyConfig::canonical() const {
       {"generators", gens},
       {"distributions", distributions},
       {"seedings", seedings},
-      {"scene",
-       {{"name", scene.name}, {"particles", scene.particles}, {"density", scene.density}, {"a", scene.a},
-        {"gamma", scene.gamma}, {"kT", scene.kT}, {"lambda", scene.lambda}, {"dt", scene.dt},
-        {"steps", scene.steps}, {"equilibrate", scene.equilibrate}, {"pairs", scene.pairs}}},
+      {"scene", scene_json},
       {"tests",
        {{"alpha", tests.alpha}, {"chi2_steps", tests.chi2_steps}, {"ttest_pairs", tests.ttest_pairs},
         {"nist_sequences", tests.nist_sequences}, {"nist_bits", tests.nist_bits},
@@ -276,10 +316,21 @@ StudyConfig parse_config(const std::string& toml_text, const std::string& origin
   Section sc = top.sub("scene");
   auto& s = c.scene;
   s.name = sc.str("name", s.name);
-  if (s.name != "water") sc.fail("name", "unknown scene '" + s.name + "' (known: water)");
+  if (s.name == "bilayer")
+    s = bilayer_scene_defaults();
+  else if (s.name != "water")
+    sc.fail("name", "unknown scene '" + s.name + "' (known: water, bilayer)");
+  const bool bilayer = s.name == "bilayer";
   s.particles = static_cast<int>(sc.integer("particles", s.particles, 2, 10'000'000));
   s.density = sc.num("density", s.density, 0, 100, true);
-  s.a = sc.num("a", s.a, 0, 1e6);
+  if (bilayer) {
+    if (sc.get("a"))
+      sc.fail("a", "not used by the bilayer scene, whose a_ij matrix is fixed (HH 30, HT 35, HW 30, TT 10, TW 75, "
+                   "WW 25): remove the key");
+    check_bilayer_box(sc, s);
+  } else {
+    s.a = sc.num("a", s.a, 0, 1e6);
+  }
   s.gamma = sc.num("gamma", s.gamma, 0, 1e6);
   s.kT = sc.num("kT", s.kT, 0, 1e6, true);
   s.lambda = sc.num("lambda", s.lambda, 0, 1);
@@ -294,6 +345,9 @@ StudyConfig parse_config(const std::string& toml_text, const std::string& origin
   Section te = top.sub("tests");
   auto& t = c.tests;
   t.alpha = te.num("alpha", t.alpha, 0, 0.5, true);
+  // Bilayer cells measure physics only: the engine taps no raw numbers there, so the generators' own tests
+  // default to off and asking for them is an error rather than an empty table.
+  if (bilayer) t.chi2_steps = 0, t.ttest_pairs = 0;
   const long production = s.steps - s.equilibrate;
   t.chi2_steps = te.integer("chi2_steps", t.chi2_steps, 0, production);
   const long pairs = static_cast<long>(s.particles) * (s.particles - 1) / 2;
@@ -302,7 +356,10 @@ StudyConfig parse_config(const std::string& toml_text, const std::string& origin
   t.nist_sequences = te.integer("nist_sequences", t.nist_sequences, 1, 100'000);
   t.nist_bits = te.integer("nist_bits", t.nist_bits, 64, 1L << 30);
   if (t.nist_bits % 64 != 0) te.fail("nist_bits", "must be a multiple of 64 (sequences are cut from 64-bit words)");
-  t.nist_generators = te.get("nist_generators") ? te.strings("nist_generators", {}) : std::vector<std::string>{};
+  // An explicit empty list is how a config says "no NIST" (the bilayer's must say so).
+  const toml::node* nist_gens = te.get("nist_generators");
+  const bool none = nist_gens && nist_gens->as_array() && nist_gens->as_array()->empty();
+  t.nist_generators = nist_gens && !none ? te.strings("nist_generators", {}) : std::vector<std::string>{};
   for (const auto& g : t.nist_generators) {
     const bool known = g == c.reference || std::any_of(c.generators.begin(), c.generators.end(),
                                                         [&](const GeneratorEntry& e) { return e.name == g; });
@@ -311,6 +368,14 @@ StudyConfig parse_config(const std::string& toml_text, const std::string& origin
   t.nist_distributions = valid_distributions(te, "nist_distributions", te.strings("nist_distributions",
                                                                                   t.nist_distributions));
   t.nist_replicas = static_cast<int>(te.integer("nist_replicas", t.nist_replicas, 0, c.replicas));
+  if (bilayer) {
+    const char* why = "must be 0 for the bilayer scene: its cells tap no raw numbers (the water scene tests the "
+                      "generators' outputs)";
+    if (t.chi2_steps != 0) te.fail("chi2_steps", why);
+    if (t.ttest_pairs != 0) te.fail("ttest_pairs", why);
+    if (!t.nist_generators.empty())
+      te.fail("nist_generators", "must be empty for the bilayer scene: its cells tap no raw numbers");
+  }
   te.finish();
 
   Section co = top.sub("cost");

@@ -1,5 +1,6 @@
 // One cell, end to end: plan the taps, run the engine, and hand the taps to the tests. The taps are dropped
-// as soon as the tests have seen them (they are the bulk of a cell's memory).
+// as soon as the tests have seen them (they are the bulk of a cell's memory). A bilayer cell is its run alone.
+#include "dpdrng/dpd/bilayer.hpp"
 #include "dpdrng/dpd/water.hpp"
 #include "dpdrng/rng/stream.hpp"
 #include "dpdrng/study/measure.hpp"
@@ -9,6 +10,10 @@ namespace dpdrng::study {
 CellResult measure_cell(const Cell& cell, const StudyConfig& config, int threads) {
   CellResult out;
   out.cell = cell;
+  if (config.scene.is_bilayer()) {
+    record_bilayer(dpd::run_bilayer(bilayer_engine_config(cell, config, threads)), out);
+    return out;
+  }
   const rng::GeneratorSpec spec = rng::validated(rng::GeneratorSpec{cell.generator, cell.rounds, rng::kPaperTeaKey});
   const int words = cell.reference ? 1 : rng::words_per_call(spec);
   const TapPlan plan = plan_taps(cell, config, words);

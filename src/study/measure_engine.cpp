@@ -75,7 +75,10 @@ void validate_scene(const StudyConfig& config) {
   for (const auto& c : cells) {
     if (!seen.insert(c.dt).second) continue;
     try {
-      engine_config(c, config, 1, TapPlan{}).validate();
+      if (config.scene.is_bilayer())
+        bilayer_engine_config(c, config, 1).validate();
+      else
+        engine_config(c, config, 1, TapPlan{}).validate();
     } catch (const InputError& e) {
       throw InputError("study config " + config.name + ": scene (dt = " + std::to_string(c.dt) + "): " + e.what());
     }

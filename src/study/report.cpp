@@ -9,12 +9,14 @@
 #include <sstream>
 
 #include "dpdrng/study/store.hpp"
+#include "report_common.hpp"
 
 namespace dpdrng::study {
 namespace fs = std::filesystem;
-namespace {
 
-void write(const fs::path& p, const std::string& text) {
+namespace detail {
+
+void write_text(const fs::path& p, const std::string& text) {
   std::ofstream out(p, std::ios::binary | std::ios::trunc);
   out << text;
   if (!out) throw std::runtime_error("cannot write " + p.string());
@@ -46,6 +48,67 @@ std::string cells_csv(const std::vector<CellResult>& cells) {
   return o.str();
 }
 
+std::string chart_link(const std::string& name, const std::string& alt) {
+  return "![" + alt + "](charts/" + name + ".png)  \n[SVG](charts/" + name + ".svg) · [gnuplot script](charts/" + name +
+         ".gp)\n\n";
+}
+
+std::string report_header(const StudyConfig& config, const Analysis& a, const std::vector<CellResult>& cells) {
+  const std::size_t expected = enumerate_cells(config).size();
+  std::size_t unstable = 0, failed = 0, disrupted = 0;
+  for (const auto& c : cells)
+    unstable += c.status == "unstable", failed += c.status == "failed", disrupted += c.status == "disrupted";
+  const auto& s = config.scene;
+  std::ostringstream md;
+  const std::time_t now = std::time(nullptr);
+  char when[64];
+  std::strftime(when, sizeof when, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+  md << "# Study `" << config.name << "`\n\n";
+  if (!config.description.empty()) md << config.description << "\n\n";
+  md << "- cells stored: **" << cells.size() << " of " << expected << "**"
+     << (cells.size() < expected ? " (partial: the missing cells are not in any table)" : "") << "; unstable: "
+     << unstable << "; failed: " << failed
+     << (disrupted ? "; disrupted (a lipid left the bilayer): " + std::to_string(disrupted) : "") << "\n";
+  if (s.is_bilayer())
+    md << "- scene: bilayer (H3(T6)2 lipids in water; box, lipids and a_ij fixed by the scene), " << s.particles
+       << " beads, ρ = " << s.density << ", γ = " << s.gamma << ", k_BT = " << s.kT << ", λ = " << s.lambda << ", "
+       << s.steps << " steps (" << s.equilibrate << " discarded; the first min(1000, " << s.equilibrate
+       << ") at Δt = 0.005), pairs: " << s.pairs << "\n";
+  else
+    md << "- scene: " << s.name << ", " << s.particles << " beads, ρ = " << s.density << ", a = " << s.a
+       << ", γ = " << s.gamma << ", k_BT = " << s.kT << ", λ = " << s.lambda << ", " << s.steps << " steps ("
+       << s.equilibrate << " discarded), pairs: " << s.pairs << "\n";
+  md << "- replicas per variant: " << config.replicas << "; reference: " << config.reference << "; α = " << a.alpha
+     << "\n- config hash `" << config.hash << "` (the config is stored in study.h5 and study.toml); generated "
+     << when << "\n\n";
+  return md.str();
+}
+
+std::string broken_cells_markdown(const std::vector<CellResult>& cells) {
+  std::ostringstream md;
+  md << "## Unstable and failed cells\n\n";
+  std::size_t broken = 0;
+  for (const auto& c : cells) broken += c.status != "ok";
+  if (broken == 0) md << "None.\n\n";
+  for (const auto& c : cells)
+    if (c.status != "ok")
+      md << "- `" << c.cell.id() << "`: " << c.status
+         << (c.unstable_step >= 0 ? " at step " + std::to_string(c.unstable_step) : "") << " — " << c.reason << "\n";
+  for (const auto& c : cells)
+    for (const auto& [k, v] : c.notes) md << "- `" << c.cell.id() << "` " << k << ": " << v << "\n";
+  return md.str();
+}
+
+}  // namespace detail
+
+namespace {
+using detail::cells_csv;
+using detail::num;
+
+void write(const fs::path& p, const std::string& text) { detail::write_text(p, text); }
+
+std::string chart(const std::string& name, const std::string& alt) { return detail::chart_link(name, alt); }
+
 std::string correlation_markdown(const Analysis& a) {
   std::ostringstream o;
   o << "| generator | distribution | ζ(i,j,t) vs ζ(i,j+1,t): r (p) | ζ(i,j,t) vs ζ(i,j,t+1): r (p) |\n|---|---|---|---|\n";
@@ -75,19 +138,14 @@ std::string correlation_markdown(const Analysis& a) {
   return any ? o.str() : "(no correlation taps stored)\n";
 }
 
-std::string chart(const std::string& name, const std::string& alt) {
-  return "![" + alt + "](charts/" + name + ".png)  \n[SVG](charts/" + name + ".svg) · [gnuplot script](charts/" + name +
-         ".gp)\n\n";
-}
-
 }  // namespace
 
 fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& cells, const fs::path& study_dir,
                       const ReportOptions& options) {
+  if (config.scene.is_bilayer()) return write_bilayer_report(config, cells, study_dir, options);
   const fs::path dir = study_dir / "report";
   fs::create_directories(dir / "charts");
   const Analysis a = analyse(config, cells);
-  const std::size_t expected = enumerate_cells(config).size();
 
   std::vector<std::string> dists;
   for (const auto& v : a.variants)
@@ -108,25 +166,8 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
   if (options.charts) made = write_charts(a, cells, dir / "charts", options.log);
   const auto have = [&](const std::string& n) { return std::find(made.begin(), made.end(), n) != made.end(); };
 
-  std::size_t unstable = 0, failed = 0;
-  for (const auto& c : cells) unstable += c.status == "unstable", failed += c.status == "failed";
-
   std::ostringstream md;
-  const std::time_t now = std::time(nullptr);
-  char when[64];
-  std::strftime(when, sizeof when, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
-  md << "# Study `" << config.name << "`\n\n";
-  if (!config.description.empty()) md << config.description << "\n\n";
-  md << "- cells stored: **" << cells.size() << " of " << expected << "**"
-     << (cells.size() < expected ? " (partial: the missing cells are not in any table)" : "") << "; unstable: "
-     << unstable << "; failed: " << failed << "\n"
-     << "- scene: " << config.scene.name << ", " << config.scene.particles << " beads, ρ = " << config.scene.density
-     << ", a = " << config.scene.a << ", γ = " << config.scene.gamma << ", k_BT = " << config.scene.kT
-     << ", λ = " << config.scene.lambda << ", " << config.scene.steps << " steps (" << config.scene.equilibrate
-     << " discarded), pairs: " << config.scene.pairs << "\n"
-     << "- replicas per variant: " << config.replicas << "; reference: " << config.reference << "; α = " << a.alpha
-     << "\n- config hash `" << config.hash << "` (the config is stored in study.h5 and study.toml); generated "
-     << when << "\n\n";
+  md << detail::report_header(config, a, cells);
 
   md << "## Verdicts\n\n"
      << "Each variant (generator × rounds × distribution × seeding) is compared with MT19937 run with identical "
@@ -207,15 +248,7 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
     if (have("step_vs_rounds_" + d)) md << chart("step_vs_rounds_" + d, "step time vs rounds, " + d);
   }
 
-  md << "## Unstable and failed cells\n\n";
-  if (unstable + failed == 0) md << "None.\n\n";
-  for (const auto& c : cells)
-    if (c.status != "ok")
-      md << "- `" << c.cell.id() << "`: " << c.status << (c.unstable_step >= 0 ? " at step " + std::to_string(c.unstable_step) : "")
-         << " — " << c.reason << "\n";
-  for (const auto& c : cells)
-    for (const auto& [k, v] : c.notes) md << "- `" << c.cell.id() << "` " << k << ": " << v << "\n";
-
+  md << detail::broken_cells_markdown(cells);
   md << "\n## Files\n\n"
      << "`summary.csv`, `pass_table.csv`, `observables.csv`, `cells.csv` (every scalar of every cell)";
   for (const auto& f : nist_files) md << ", `" << f << "`";

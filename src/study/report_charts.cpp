@@ -9,25 +9,12 @@
 #include <sstream>
 
 #include "dpdrng/study/report.hpp"
+#include "report_chart.hpp"
 
 namespace dpdrng::study {
 namespace fs = std::filesystem;
-namespace {
 
-struct Line {
-  std::string title;
-  std::string style;  // gnuplot "using … with …" part
-  std::vector<std::vector<double>> rows;
-  std::vector<std::string> labels;  // optional last column (quoted)
-};
-
-struct Chart {
-  std::string name, title, xlabel, ylabel;
-  bool logx = false, logy = false;
-  std::string extra;  // more gnuplot settings
-  std::vector<Line> lines;
-  bool auto_logy = false;  // switch to a log y axis when the values span more than a decade
-};
+namespace detail {
 
 std::string q(const std::string& s) {
   std::string out = "\"";
@@ -37,7 +24,6 @@ std::string q(const std::string& s) {
 
 bool has_gnuplot() { return std::system("command -v gnuplot >/dev/null 2>&1") == 0; }
 
-// Returns false when there is nothing to draw.
 bool render(const Chart& c, const fs::path& dir, bool run, std::ostream* log) {
   std::size_t points = 0;
   for (const auto& l : c.lines) points += l.rows.size();
@@ -87,6 +73,7 @@ bool render(const Chart& c, const fs::path& dir, bool run, std::ostream* log) {
   return true;
 }
 
+// Element-wise mean over the cells that hold the series (those of another length are skipped).
 std::vector<double> mean_series(const std::vector<const CellResult*>& cells, const std::string& name) {
   std::vector<double> m;
   std::size_t n = 0;
@@ -100,6 +87,16 @@ std::vector<double> mean_series(const std::vector<const CellResult*>& cells, con
   for (double& x : m) x /= double(n);
   return m;
 }
+
+}  // namespace detail
+
+namespace {
+using detail::Chart;
+using detail::mean_series;
+using detail::Line;
+using detail::q;
+using detail::render;
+using detail::has_gnuplot;
 
 // Lines of one family: a generator with one seeding (its round counts in order) for one distribution.
 std::map<std::string, std::vector<const VariantReport*>> families(const Analysis& a, const std::string& dist) {

@@ -147,7 +147,7 @@ std::string summary_markdown(const Analysis& a) {
        "ns per number | step (ms) | RNG share |\n|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& v : a.variants) {
     o << "| " << v.key.label() << " | " << v.key.distribution << " | " << (v.key.reference ? "stream" : v.key.seeding)
-      << " | " << v.cells.size() << (v.broken.empty() ? "" : "+" + std::to_string(v.broken.size()) + " broken")
+      << " | " << v.cells.size() << (v.broken.empty() ? std::string() : fmt("+%.0f broken", double(v.broken.size())))
       << " | " << v.verdict << " | " << fmt("%.2f", v.worst_error_over_floor) << " | "
       << (std::isfinite(v.nist_failed) ? fmt("%.0f", v.nist_failed) + " / " + fmt("%.0f", v.nist_columns) : "–")
       << " | " << fmt("%.2f", v.ns_per_number) << " | " << fmt("%.3f", v.step_ms) << " | "

@@ -84,6 +84,7 @@ RunSummary run_study(const StudyConfig& config, Store& store, const RunOptions& 
       std::lock_guard lk(mu);
       ++sum.computed;
       if (r.status == "unstable") ++sum.unstable;
+      if (r.status == "disrupted") ++sum.disrupted;
       if (r.status == "failed") ++sum.failed;
       busy[cell.nist] += r.seconds;
       ++done_kind[cell.nist];

@@ -14,39 +14,12 @@
 #include <vector>
 
 #include "dpdrng/rng/stream.hpp"
+#include "run_cli.hpp"
 
 using namespace dpdrng::rng;
+using namespace dpdrng::cli_test;
 
 namespace {
-
-struct Result {
-  int code = -1;
-  std::string out, err;
-};
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
-
-std::string scratch(const std::string& suffix) {
-  const auto* t = ::testing::UnitTest::GetInstance()->current_test_info();
-  return ::testing::TempDir() + "dpdrng_" + t->test_suite_name() + "_" + t->name() + suffix;
-}
-
-// Runs `dpdrng <args>` through the shell, stdout and stderr to files.
-Result run(const std::string& args) {
-  const std::string out = scratch(".out"), err = scratch(".err");
-  const std::string cmd = "\"" DPDRNG_CLI_PATH "\" " + args + " > \"" + out + "\" 2> \"" + err + "\"";
-  const int status = std::system(cmd.c_str());
-  Result r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
-  std::remove(out.c_str());
-  std::remove(err.c_str());
-  return r;
-}
 
 GeneratorSpec spec(const char* name, int rounds) {
   GeneratorSpec s;

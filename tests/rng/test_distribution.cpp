@@ -62,7 +62,7 @@ Moments moments(const std::vector<double>& x) {
 std::vector<GeneratorSpec> strong_generators() {
   std::vector<GeneratorSpec> out;
   for (auto [name, rounds] : {std::pair{"tea32", 32}, {"tea64", 32}, {"philox4x32", 10}, {"threefry2x64", 20},
-                              {"splitmix64", 1}, {"mt19937", 1}}) {
+                              {"splitmix64", 1}, {"saru", 1}, {"mt19937", 1}}) {
     GeneratorSpec s;
     s.name = name;
     s.rounds = rounds;
@@ -142,7 +142,8 @@ TEST(Seeding, SymmetricForEveryGeneratorAndSeeding) {
                              {1u << 31, 5, -0.0, 0.5, -0.5, ~std::uint64_t{0}}};
   std::vector<GeneratorSpec> specs;
   for (auto [name, rounds] : {std::pair{"tea32", 1}, {"tea32", 32}, {"tea64", 1}, {"tea64", 8},
-                              {"philox4x32", 10}, {"threefry2x64", 20}, {"splitmix64", 1}, {"tea32", 7}}) {
+                              {"philox4x32", 10}, {"threefry2x64", 20}, {"splitmix64", 1}, {"saru", 1},
+                              {"tea32", 7}}) {
     GeneratorSpec s;
     s.name = name;
     s.rounds = rounds;

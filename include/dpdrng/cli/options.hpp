@@ -1,8 +1,9 @@
 #pragma once
-// Options shared by subcommands that choose a generator.
+// Options shared by subcommands: the generator choice, and the run options of the two DPD scene commands.
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "dpdrng/dpd/config.hpp"
 #include "dpdrng/rng/registry.hpp"
 
 namespace dpdrng::cli {
@@ -16,5 +17,53 @@ struct GeneratorOptions {
   void add_to(CLI::App& app);
   rng::GeneratorSpec spec() const;  // validated; throws InputError
 };
+
+// Refuses NaN and ±inf at parse time, naming the option: a config's own checks cover only the fields that
+// matter for the mode chosen (the skin only with pairs=cells), but a non-finite number is always a typo.
+const CLI::Validator& finite_number();
+// A real-valued option with the finite check and its default shown in --help.
+CLI::Option* add_real(CLI::App& app, const std::string& name, double& value, const std::string& help);
+
+// What `simulate` and `simulate-bilayer` both take besides the scene's physics.
+struct RunOptions {
+  GeneratorOptions gen;
+  std::string pairs, seeding = "distance", distribution = "gauss";
+  bool json = false, quiet = false;
+  std::string series_dir;
+
+  explicit RunOptions(std::string default_pairs) : pairs(std::move(default_pairs)) {}
+  // Help texts that differ between the scenes.
+  struct Help {
+    std::string pairs, sample_every, series;
+  };
+  // Noise, pair search, seeds, threads, sampling and output; binds the fields both scene configs name alike.
+  template <class Config>
+  void add_to(CLI::App& app, Config& c, const Help& help);
+  // Fills the config's generator, pair mode, seeding and distribution; throws InputError.
+  template <class Config>
+  void apply(Config& c) const {
+    c.generator = gen.spec();
+    c.pairs = dpd::parse_pair_mode(pairs);
+    c.seeding = rng::parse_seeding(seeding);
+    c.distribution = rng::parse_distribution(distribution);
+  }
+
+ private:
+  void add_noise_and_output(CLI::App& app, const Help& help, double& skin, std::uint64_t& seed,
+                            std::uint64_t& init_seed, int& threads, int& sample_every);
+};
+
+// γ, k_BT and λ, alike in both scenes.
+template <class Config>
+void add_thermostat_options(CLI::App& app, Config& c) {
+  add_real(app, "--gamma", c.gamma, "dissipative strength (sigma^2 = 2 gamma kT)");
+  add_real(app, "--kT", c.kT, "temperature k_BT");
+  add_real(app, "--lambda", c.lambda, "Groot-Warren lambda (0.5 = velocity-Verlet)");
+}
+
+template <class Config>
+void RunOptions::add_to(CLI::App& app, Config& c, const Help& help) {
+  add_noise_and_output(app, help, c.skin, c.seed, c.init_seed, c.threads, c.sample_every);
+}
 
 }  // namespace dpdrng::cli

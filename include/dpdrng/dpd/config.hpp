@@ -18,6 +18,12 @@ enum class PairMode { all, cells };
 PairMode parse_pair_mode(std::string_view name);  // throws InputError
 std::string_view to_string(PairMode m);
 
+// mvv: Groot–Warren modified velocity-Verlet (λ). shardlow: Shardlow's S1 splitting (shardlow.hpp; λ unused),
+// water scene only.
+enum class Integrator { mvv, shardlow };
+Integrator parse_integrator(std::string_view name);  // throws InputError
+std::string_view to_string(Integrator i);
+
 // Noise replacements that keep every other cost of a step; only the benchmark uses them, to measure the RNG's
 // share by difference. none: ζ = 0 without a generator call. unhashed: the seed words pass through unhashed
 // into the distribution (measures the hash alone).
@@ -43,6 +49,7 @@ struct WaterConfig {
   // Integration (Groot & Warren 1997 modified velocity-Verlet; λ = 0.5 is plain velocity-Verlet)
   double lambda = 0.5;
   double dt = 0.04;
+  Integrator integrator = Integrator::mvv;
   std::int64_t steps = 10000;
   std::int64_t equilibrate = 500;
   // Pair search

@@ -70,4 +70,10 @@ class PairForces {
 // the pair mode. The config must be valid.
 std::unique_ptr<PairForces> make_pair_forces(const WaterConfig& cfg, const DpdKernel& kernel, std::size_t n);
 
+// The noise's share of a force evaluation by difference: `pair` (made from cfg) and a ζ = 0 loop of the same
+// config evaluate the forces of state s alternately, 5 to 64 times (stopping once budget_s has passed), and
+// the share is 1 − median(ζ = 0) / median(pair). Steps first_step, first_step + 1, … are used for seeding.
+double rng_share_by_difference(PairForces& pair, const WaterConfig& cfg, const DpdKernel& kernel, System s,
+                               std::uint64_t first_step, double budget_s);
+
 }  // namespace dpdrng::dpd

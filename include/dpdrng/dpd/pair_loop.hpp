@@ -1,8 +1,13 @@
 #pragma once
-// The pair loop, templated on the noise policy (noise.hpp) so that the generator inlines. Each row i is done
-// in two passes over its partners j > i: geometry (separation, r², and in `all` mode the generator call for
-// every pair, as the paper does), then forces for the pairs inside r_c. The split keeps the first pass free
-// of branches so the compiler can vectorise the hash.
+// The pair loop, templated on the noise policy (noise.hpp) so that the generator inlines.
+//   all:   row i does its partners j > i in two passes: geometry (separation, r², and the generator call for
+//          every pair, as the paper does), then forces for the pairs inside r_c. The split keeps the first
+//          pass free of branches so the compiler can vectorise the hash. Reactions are added serially.
+//   cells: the beads are sorted by cell every step (neighbours.hpp) and copied into sorted arrays; each cell
+//          does its own pairs and those with its 13 forward neighbours, writing both forces at once; even
+//          z-layers of cells run in parallel (disjoint writes), then odd ones. Forces go back to the
+//          System in its own order. Generator inputs use the beads' own indices, so nothing but the
+//          summation order depends on the sorting.
 #include <omp.h>
 
 #include <algorithm>
@@ -41,41 +46,41 @@ class PairLoop final : public PairForces {
            std::vector<std::pair<std::uint32_t, std::uint32_t>> tap_pairs)
       : noise_(std::move(noise)), k_(kernel), mode_(mode), threads_(threads > 0 ? threads : omp_get_max_threads()),
         tap_pairs_(std::move(tap_pairs)) {
-    list_.skin = skin;
-    rows_.resize(n);
+    (void)skin;  // cells mode re-sorts every step: there is no list to keep alive
     scratch_.resize(threads_);
-    for (auto& sc : scratch_) sc.resize(n);
+    if (mode_ == PairMode::all) {
+      rows_.resize(n);
+      for (auto& sc : scratch_) sc.resize(n);
+    }
   }
 
   int words_per_pair() const override { return Noise::kWords; }
-  std::uint64_t list_builds() const override { return list_.builds(); }
+  std::uint64_t list_builds() const override { return cells_.builds(); }
 
   ForceSums compute(System& s, VelocityView v, std::uint64_t step, bool tap_raw, bool tap_series,
                     Taps& taps) override {
     const std::size_t n = s.size();
-    const bool all = mode_ == PairMode::all;
-    if (!all && list_.stale(s)) list_.build(s, k_.rc, threads_);
-    const std::size_t slots = all ? n * (n - 1) / 2 : list_.entries();
-    if constexpr (Noise::kStream) noise_.begin_step(slots);
     RawTap* tap = nullptr;
     if (tap_raw && !Noise::kZero) {
       tap = &taps.raw.emplace_back();
       tap->step = static_cast<std::int64_t>(step);
       tap->words_per_pair = Noise::kWords;
-      for (int w = 0; w < Noise::kWords; ++w) tap->words[w].assign(all ? slots : 0, 0);
     }
     const Ctx c{s, v, step, tap};
+    ForceSums sums;
+    if (mode_ == PairMode::all) {
+      const std::size_t slots = n * (n - 1) / 2;
+      if constexpr (Noise::kStream) noise_.begin_step(slots);
+      if (tap)
+        for (int w = 0; w < Noise::kWords; ++w) tap->words[w].assign(slots, 0);
 #pragma omp parallel for num_threads(threads_) schedule(dynamic, 16)
-    for (std::size_t i = 0; i < n; ++i) {
-      Scratch& sc = scratch_[omp_get_thread_num()];
-      if (all)
-        row_all(c, static_cast<std::uint32_t>(i), sc);
-      else
-        row_list(c, static_cast<std::uint32_t>(i), sc);
+      for (std::size_t i = 0; i < n; ++i) row_all(c, static_cast<std::uint32_t>(i), scratch_[omp_get_thread_num()]);
+      sums = reduce(s);
+      sums.numbers = Noise::kZero ? 0 : slots;
+    } else {
+      sums = compute_cells(c);
+      sums.numbers = Noise::kZero ? 0 : sums.in_range;
     }
-    ForceSums sums = reduce(s);
-    sums.numbers = Noise::kZero ? 0 : (all ? slots : sums.in_range);
-    if (tap && !all) gather_tap(*tap, n);
     if (tap_series && !Noise::kZero) record_series(s, step, taps);
     return sums;
   }
@@ -92,18 +97,25 @@ class PairLoop final : public PairForces {
   };
   struct Row {
     std::vector<Rec> rec;
-    std::vector<std::uint64_t> tap[2];  // cells mode: raw words of this row's pairs inside r_c
     std::uint32_t count = 0;
     double w[3] = {0, 0, 0}, wc[3] = {0, 0, 0};
     double min_r2 = 0;
   };
   struct Scratch {
     std::vector<double> dx, dy, dz, r2;
-    std::vector<std::uint32_t> j, slot;
+    std::vector<std::uint32_t> j;
     std::vector<typename Noise::Block> blk;
+    std::vector<double> cx, cy, cz;   // cells: coordinates of a cell's candidates, contiguous
+    std::vector<std::uint32_t> cand;  // cells: their sorted indices
     void resize(std::size_t n) {
-      dx.resize(n), dy.resize(n), dz.resize(n), r2.resize(n), j.resize(n), slot.resize(n), blk.resize(n);
+      dx.resize(n), dy.resize(n), dz.resize(n), r2.resize(n), j.resize(n), blk.resize(n);
+      cx.resize(n), cy.resize(n), cz.resize(n), cand.resize(n);
     }
+  };
+  struct CellSums {
+    double w[3] = {0, 0, 0}, wc[3] = {0, 0, 0};
+    double min_r2 = 0;
+    std::uint64_t count = 0;
   };
   struct Ctx {
     System& s;
@@ -205,33 +217,155 @@ class PairLoop final : public PairForces {
     forces(c, i, k, sc, rows_[i]);
   }
 
-  void row_list(const Ctx& c, std::uint32_t i, Scratch& sc) {
-    const System& s = c.s;
-    const double Lx = s.box.L[0], Ly = s.box.L[1], Lz = s.box.L[2];
-    const double hx = Lx / 2, hy = Ly / 2, hz = Lz / 2;
-    const double xi = s.x[i], yi = s.y[i], zi = s.z[i];
-    const double rc2 = k_.rc2();
-    const std::uint32_t* js = list_.j();
-    std::size_t k = 0;
-    for (std::uint32_t e = list_.begin(i); e < list_.end(i); ++e) {
-      const std::uint32_t j = js[e];
-      const double dx = min_image(s.x[j] - xi, Lx, hx), dy = min_image(s.y[j] - yi, Ly, hy),
-                   dz = min_image(s.z[j] - zi, Lz, hz);
-      const double r2 = dx * dx + dy * dy + dz * dz;
-      sc.j[k] = j, sc.slot[k] = e;
-      sc.dx[k] = dx, sc.dy[k] = dy, sc.dz[k] = dz, sc.r2[k] = r2;
-      k += r2 < rc2 ? 1 : 0;  // branch-free compaction: the slot is overwritten unless the pair is in range
+  // Sorted copies of what the pairs read (positions, the dissipative force's velocities, indices, types).
+  void gather(const System& s, VelocityView v) {
+    const std::size_t n = s.size();
+    for (auto* a : {&xs_, &ys_, &zs_, &vxs_, &vys_, &vzs_}) a->resize(n);
+    fxs_.assign(n, 0.0), fys_.assign(n, 0.0), fzs_.assign(n, 0.0);
+    types_.resize(n);
+    const std::uint32_t* order = cells_.order().data();
+    // Serial: a few microseconds of copying, where a parallel region would add a sync point to every step.
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::uint32_t i = order[k];
+      xs_[k] = s.x[i], ys_[k] = s.y[i], zs_[k] = s.z[i];
+      vxs_[k] = v.vx[i], vys_[k] = v.vy[i], vzs_[k] = v.vz[i];
+      types_[k] = s.type[i];
     }
-    if constexpr (!Noise::kZero)
-      for (std::size_t t = 0; t < k; ++t)
-        sc.blk[t] = noise_.raw(rng::PairInput{i, sc.j[t], sc.dx[t], sc.dy[t], sc.dz[t], c.step}, sc.slot[t]);
-    Row& row = rows_[i];
-    if (c.tap)
-      for (int w = 0; w < Noise::kWords; ++w) {
-        row.tap[w].resize(k);
-        for (std::size_t t = 0; t < k; ++t) row.tap[w][t] = sc.blk[t][w];
+  }
+
+  // Candidates of cell c, contiguous in sc: its own beads first, then those of its forward neighbours.
+  std::size_t candidates(int c, Scratch& sc) const {
+    const std::int32_t* fw = cells_.forward(c);
+    const int nf = cells_.forward_count();
+    std::size_t m = cells_.end(c) - cells_.begin(c);
+    for (int f = 0; f < nf; ++f) m += cells_.end(fw[f]) - cells_.begin(fw[f]);
+    if (sc.cand.size() < m) sc.resize(m);
+    std::size_t t = 0;
+    auto add = [&](int cell) {
+      for (std::uint32_t k = cells_.begin(cell); k < cells_.end(cell); ++k, ++t)
+        sc.cand[t] = k, sc.cx[t] = xs_[k], sc.cy[t] = ys_[k], sc.cz[t] = zs_[k];
+    };
+    add(c);
+    for (int f = 0; f < nf; ++f) add(fw[f]);
+    return m;
+  }
+
+  // Bead q of the cell (sorted index a) against the candidates after it: the pairs inside r_c, compacted
+  // into sc (partners' sorted indices in sc.j). Returns their number.
+  std::size_t in_range(const Box& box, std::uint32_t a, std::size_t q, std::size_t m, Scratch& sc) const {
+    const std::size_t len = m - q - 1;
+    geometry(sc.cx.data() + q + 1, sc.cy.data() + q + 1, sc.cz.data() + q + 1, xs_[a], ys_[a], zs_[a], box, len,
+             sc.dx.data(), sc.dy.data(), sc.dz.data(), sc.r2.data());
+    const double rc2 = k_.rc2();
+    const std::uint32_t* cand = sc.cand.data() + q + 1;
+    std::size_t k = 0;
+    for (std::size_t t = 0; t < len; ++t) {
+      sc.j[k] = cand[t];
+      sc.dx[k] = sc.dx[t], sc.dy[k] = sc.dy[t], sc.dz[k] = sc.dz[t], sc.r2[k] = sc.r2[t];
+      k += sc.r2[t] < rc2 ? 1 : 0;  // branch-free compaction: the slot is overwritten unless the pair is in range
+    }
+    return k;
+  }
+
+  std::uint64_t count_cell(const Box& box, int c, Scratch& sc) const {
+    const std::size_t m = candidates(c, sc), own = cells_.end(c) - cells_.begin(c);
+    std::uint64_t count = 0;
+    for (std::size_t q = 0; q < own; ++q) count += in_range(box, cells_.begin(c) + std::uint32_t(q), q, m, sc);
+    return count;
+  }
+
+  // All pairs owned by cell c. Writes only to the beads of c and its forward neighbours.
+  void do_cell(const Ctx& cx, int c, Scratch& sc, bool tap) {
+    const Box& box = cx.s.box;
+    const std::size_t m = candidates(c, sc), own = cells_.end(c) - cells_.begin(c);
+    const double rc = k_.rc, gamma = k_.gamma, sig = k_.sigma * k_.inv_sqrt_dt;
+    const std::uint32_t* ids = cells_.order().data();
+    CellSums cs;
+    cs.min_r2 = k_.rc2();
+    std::uint64_t slot = slot_base_.empty() ? 0 : slot_base_[c];
+    if (tap)
+      for (int w = 0; w < Noise::kWords; ++w) cell_tap_[c][w].clear();
+    for (std::size_t q = 0; q < own; ++q) {
+      const std::uint32_t a = cells_.begin(c) + std::uint32_t(q);
+      const std::size_t k = in_range(box, a, q, m, sc);
+      if constexpr (!Noise::kZero)
+        for (std::size_t t = 0; t < k; ++t) {
+          const rng::PairInput p{ids[a], ids[sc.j[t]], sc.dx[t], sc.dy[t], sc.dz[t], cx.step};
+          sc.blk[t] = noise_.raw(rng::canonical(p), slot + t);
+        }
+      if (tap)
+        for (int w = 0; w < Noise::kWords; ++w)
+          for (std::size_t t = 0; t < k; ++t) cell_tap_[c][w].push_back(sc.blk[t][w]);
+      slot += k;
+      const double vxa = vxs_[a], vya = vys_[a], vza = vzs_[a];
+      const double* arow = &k_.a[std::size_t(types_[a]) * k_.ntypes];
+      double fx = 0, fy = 0, fz = 0;
+      for (std::size_t t = 0; t < k; ++t) {
+        const std::uint32_t b = sc.j[t];
+        const double dx = sc.dx[t], dy = sc.dy[t], dz = sc.dz[t], r2 = sc.r2[t];
+        const double zeta = Noise::kZero ? 0.0 : noise_.zeta(sc.blk[t]);
+        const PairForce pf = DpdKernel::evaluate(r2, dx, dy, dz, vxs_[b] - vxa, vys_[b] - vya, vzs_[b] - vza,
+                                                 arow[types_[b]], zeta, rc, gamma, sig);
+        const double gx = pf.s * dx, gy = pf.s * dy, gz = pf.s * dz;
+        fx += gx, fy += gy, fz += gz;
+        fxs_[b] -= gx, fys_[b] -= gy, fzs_[b] -= gz;
+        // r_ab = −d and F_ab = s·d: (r_ab)_α (F_ab)_α = −s d_α²; conservative: a w d_α² / r.
+        cs.w[0] -= gx * dx, cs.w[1] -= gy * dy, cs.w[2] -= gz * dz;
+        const double cw = pf.a_w / r2;
+        cs.wc[0] += cw * dx * dx, cs.wc[1] += cw * dy * dy, cs.wc[2] += cw * dz * dz;
+        cs.min_r2 = std::min(cs.min_r2, r2);
       }
-    forces(c, i, k, sc, row);
+      fxs_[a] += fx, fys_[a] += fy, fzs_[a] += fz;
+      cs.count += k;
+    }
+    cell_sums_[c] = cs;
+  }
+
+  ForceSums compute_cells(const Ctx& cx) {
+    System& s = cx.s;
+    const std::size_t n = s.size();
+    cells_.build(s, k_.rc);
+    gather(s, cx.v);
+    const int nc = cells_.cells();
+    cell_sums_.resize(std::size_t(nc));
+    const bool tap = cx.tap != nullptr;
+    // The stream reference needs every pair's slot in the fixed pair order before the colours run.
+    slot_base_.clear();
+    if (Noise::kStream) {
+      slot_base_.assign(std::size_t(nc) + 1, 0);
+#pragma omp parallel for num_threads(threads_) schedule(dynamic, 8)
+      for (int c = 0; c < nc; ++c) slot_base_[c + 1] = count_cell(s.box, c, scratch_[omp_get_thread_num()]);
+      for (int c = 0; c < nc; ++c) slot_base_[c + 1] += slot_base_[c];
+      noise_.begin_step(slot_base_[nc]);
+    }
+    if (tap) cell_tap_.resize(std::size_t(nc));
+    // Two barriers a step; a box with few layers per colour runs on one thread (the result does not depend
+    // on the team size, so this choice is free).
+    const int colours = cells_.colours(), layers = cells_.layers(), per_layer = cells_.layer_cells();
+    const int team = layers / colours >= 2 * threads_ ? threads_ : 1;
+#pragma omp parallel num_threads(team)
+    {
+      Scratch& sc = scratch_[omp_get_thread_num()];
+      for (int k = 0; k < colours; ++k) {
+#pragma omp for schedule(dynamic, 1)
+        for (int z = k; z < layers; z += colours)
+          for (int c = z * per_layer; c < (z + 1) * per_layer; ++c) do_cell(cx, c, sc, tap);
+      }
+    }
+    const std::uint32_t* order = cells_.order().data();
+    for (std::size_t k = 0; k < n; ++k) s.fx[order[k]] = fxs_[k], s.fy[order[k]] = fys_[k], s.fz[order[k]] = fzs_[k];
+    ForceSums sums;
+    sums.min_r2 = k_.rc2();
+    for (const CellSums& cs : cell_sums_) {
+      for (int a = 0; a < 3; ++a) sums.virial[a] += cs.w[a], sums.virial_cons[a] += cs.wc[a];
+      sums.min_r2 = std::min(sums.min_r2, cs.min_r2);
+      sums.in_range += cs.count;
+    }
+    if (tap)
+      for (int c = 0; c < nc; ++c)
+        for (int w = 0; w < Noise::kWords; ++w)
+          cx.tap->words[w].insert(cx.tap->words[w].end(), cell_tap_[c][w].begin(), cell_tap_[c][w].end());
+    return sums;
   }
 
   ForceSums reduce(System& s) const {
@@ -248,12 +382,6 @@ class PairLoop final : public PairForces {
       sums.in_range += row.count;
     }
     return sums;
-  }
-
-  void gather_tap(RawTap& tap, std::size_t n) const {
-    for (std::size_t i = 0; i < n; ++i)
-      for (int w = 0; w < Noise::kWords; ++w)
-        tap.words[w].insert(tap.words[w].end(), rows_[i].tap[w].begin(), rows_[i].tap[w].begin() + rows_[i].count);
   }
 
   // Hashes are pure functions of the pair input, so a tapped pair's block is recomputed here from the same
@@ -283,9 +411,15 @@ class PairLoop final : public PairForces {
   PairMode mode_;
   int threads_;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> tap_pairs_;
-  VerletList list_;
-  std::vector<Row> rows_;
+  std::vector<Row> rows_;  // all mode
   std::vector<Scratch> scratch_;
+  // cells mode
+  SortedCells cells_;
+  std::vector<double> xs_, ys_, zs_, vxs_, vys_, vzs_, fxs_, fys_, fzs_;
+  std::vector<std::uint8_t> types_;
+  std::vector<CellSums> cell_sums_;
+  std::vector<std::uint64_t> slot_base_;
+  std::vector<std::array<std::vector<std::uint64_t>, 2>> cell_tap_;
 };
 
 }  // namespace dpdrng::dpd

@@ -53,7 +53,7 @@ struct Timings {
   std::uint64_t zetas = 0;           // distribution transforms (pairs inside r_c)
   double ns_per_number = 0;          // generator call, calibrated in a batch loop like the pair loop's
   double ns_per_zeta = 0;            // distribution transform (Box–Muller or √3(2u−1))
-  // (random_numbers·ns_per_number + zetas·ns_per_zeta) / force time; `dpdrng bench dpd` measures it by difference.
+  // Water: the RNG's share of a step, by difference against ζ = 0 on the final state (rng_share_by_difference).
   double rng_share_estimate = 0;
   std::uint64_t list_builds = 0;
   int threads = 1;
@@ -70,6 +70,7 @@ struct RunResult {
   bool ok() const { return status == "ok"; }
   std::int64_t steps_done = 0;
   std::string generator, seeding, distribution, pairs;
+  std::string integrator = "mvv";
   std::size_t particles = 0;
   double box_length = 0;
 
@@ -89,5 +90,22 @@ struct RunResult {
 
 // Scalars only unless `arrays` (then also pdf, msd, g(r), series; taps never: they are for the tests).
 nlohmann::json to_json(const RunResult& r, bool arrays);
+
+// Pieces every scene's JSON record shares, so that the water and bilayer records spell them alike.
+nlohmann::json to_json(const Stat& s);           // {mean, std, sem, n}
+nlohmann::json timings_json(const Timings& t);   // the whole-run timings (not the production-only figures)
+void put_mean_sem(nlohmann::json& j, const std::string& key, const Stat& s);   // key_mean, key_sem
+void put_value_sem(nlohmann::json& j, const std::string& key, const Stat& s);  // key (the mean), key_sem
+// status, steps_done, the noise labels, pair mode and bead count of any scene's result.
+template <class Result>
+void put_run_labels(nlohmann::json& j, const Result& r) {
+  j["status"] = r.status;
+  j["steps_done"] = r.steps_done;
+  j["generator"] = r.generator;
+  j["seeding"] = r.seeding;
+  j["distribution"] = r.distribution;
+  j["pairs"] = r.pairs;
+  j["particles"] = r.particles;
+}
 
 }  // namespace dpdrng::dpd

@@ -6,6 +6,8 @@
 #include <numbers>
 #include <string_view>
 
+#include "dpdrng/rng/unit_math.hpp"
+
 namespace dpdrng::rng {
 
 // [0,1) with the top 53 bits: every double is exact and 1.0 can never come out.
@@ -22,10 +24,16 @@ inline double uniform_unit_variance(const std::array<std::uint64_t, N>& b) {
 }
 
 // Box–Muller, cosine branch. The two uniforms: a block of two 64-bit words gives one each at 53-bit resolution
-// (64TEA's a and b, Philox's halves); a single 64-bit word (32TEA, SplitMix64) gives its two 32-bit halves,
+// (64TEA's a and b, Philox's halves); a single 64-bit word (32TEA, SplitMix64, Saru) gives its two 32-bit halves,
 // which for 32TEA are the two TEA output words x0' and x1'.
+// Split in two so that the batched path (fill_noise) can run the same parts in vectorised loops: radius² =
+// −2·log u1 and cos(2π·u2) through math::log_unit and math::cos_2pi, then the correctly rounded sqrt (std::sqrt
+// here, the SIMD instruction there), so that a block gives the same ζ, bit for bit, on either path.
+struct BoxMullerParts {
+  double radius2, cosine;
+};
 template <std::size_t N>
-inline double box_muller(const std::array<std::uint64_t, N>& b) {
+inline BoxMullerParts box_muller_parts(const std::array<std::uint64_t, N>& b) {
   double u1, u2;
   if constexpr (N >= 2) {
     u1 = to_unit_open0(b[0]);
@@ -34,7 +42,13 @@ inline double box_muller(const std::array<std::uint64_t, N>& b) {
     u1 = (static_cast<double>(b[0] & 0xffffffffu) + 1.0) * 0x1p-32;
     u2 = static_cast<double>(b[0] >> 32) * 0x1p-32;
   }
-  return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
+  return {-2.0 * math::log_unit(u1), math::cos_2pi(u2)};
+}
+
+template <std::size_t N>
+inline double box_muller(const std::array<std::uint64_t, N>& b) {
+  const BoxMullerParts p = box_muller_parts(b);
+  return std::sqrt(p.radius2) * p.cosine;
 }
 
 template <Distribution D, std::size_t N>

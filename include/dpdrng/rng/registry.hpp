@@ -7,6 +7,7 @@
 
 #include "dpdrng/rng/mt.hpp"
 #include "dpdrng/rng/random123.hpp"
+#include "dpdrng/rng/saru.hpp"
 #include "dpdrng/rng/seeding.hpp"
 #include "dpdrng/rng/splitmix.hpp"
 #include "dpdrng/rng/tea.hpp"
@@ -66,6 +67,7 @@ decltype(auto) with_hash(const GeneratorSpec& s, F&& f) {
   if (s.name == "philox4x32") return detail::dispatch_rounds<Philox4x32, 7, 10>(s, std::forward<F>(f));
   if (s.name == "threefry2x64") return detail::dispatch_rounds<Threefry2x64, 13, 20>(s, std::forward<F>(f));
   if (s.name == "splitmix64") return detail::dispatch_rounds<SplitMix64, 1>(s, std::forward<F>(f));
+  if (s.name == "saru") return detail::dispatch_rounds<Saru, 1>(s, std::forward<F>(f));
   throw_not_keyed_hash(s.name);
 }
 

@@ -35,9 +35,14 @@ struct Comparison {
   double error_rate = 0;    // |value − ref| / |ref| for scalars (|value − ref| for observables that are themselves
                             // error rates); mean relative curve deviation for curves
   double noise_floor = 0;   // the same quantity for MT against MT (1σ for scalars)
-  double p_value = 1;       // Welch's t-test of "no difference" (NaN when replicas cannot tell)
+  double p_value = 1;       // Welch's t-test of "no difference" (NaN when replicas cannot tell); paired t below
   bool available = false;
   std::string note;
+  // Bilayer scalars are compared replica by replica (each replica starts every generator from one state):
+  // mean of value − ref over the replicas both have, its 95 % CI half-width, and p_value is the paired t-test.
+  bool paired = false;
+  double diff = NAN, diff_ci = NAN;
+  std::size_t n_pairs = 0;
 };
 
 // A pass fraction pooled over a variant's replicas (χ² over steps, lag-1 t over pairs).
@@ -78,11 +83,37 @@ struct VariantReport {
 
 struct Analysis {
   double alpha = 0.01;
+  bool bilayer = false;  // the membrane scene: physics only, absolute differences, paired tests
   std::vector<VariantReport> variants;  // reference variants first, then in sweep order
   const VariantReport* reference_for(const VariantKey& k) const;
 };
 
 Analysis analyse(const StudyConfig& config, const std::vector<CellResult>& cells);
+
+// The bilayer scene's scalars: cells store <name>_mean, _std and _sem (measure.hpp).
+struct BilayerObservable {
+  const char* name;   // "tension"
+  const char* label;  // "Σ"
+  const char* what;   // "tension L_z[P_zz − (P_xx+P_yy)/2]"
+};
+const std::vector<BilayerObservable>& bilayer_observables();
+
+// Replica mean of a cell scalar with its 95 % confidence half-width: Student t over the replicas when there are
+// at least two; with one replica, 1.96 × the run's own block standard error (`sem_name`), flagged.
+struct ReplicaMean {
+  double mean = NAN, ci95 = NAN;
+  std::size_t n = 0;
+  bool from_run_sem = false;
+};
+ReplicaMean replica_mean(const std::vector<const CellResult*>& cells, const std::string& name,
+                         const std::string& sem_name);
+
+// Two-sided paired t-test of x against y on the replicas both hold (x, y: replica → value); NaN below 2 pairs.
+struct PairedTest {
+  std::size_t n = 0;
+  double diff = NAN, ci95 = NAN, p_value = NAN;
+};
+PairedTest paired_test(const std::map<int, double>& x, const std::map<int, double>& y);
 
 // Mean relative deviation of `curve` from `ref` over the bins where ref >= threshold (NaN if none).
 double curve_error(const std::vector<double>& curve, const std::vector<double>& ref, double threshold);

@@ -16,6 +16,8 @@ struct GeneratorEntry {
   std::vector<std::string> seedings;   // empty → the study's seedings
 };
 
+// name = "water" (the paper's fluid) or "bilayer" (issue 7's membrane: box, lipids and a_ij fixed by the scene,
+// `a` refused, particles/density must fill its 10 x 10 x 18 box; the other fields default to the scene's values).
 struct SceneParams {
   std::string name = "water";
   int particles = 256;
@@ -28,6 +30,8 @@ struct SceneParams {
   long steps = 10000;
   long equilibrate = 500;
   std::string pairs = "all";
+
+  bool is_bilayer() const { return name == "bilayer"; }
 };
 
 struct TestParams {

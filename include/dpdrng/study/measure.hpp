@@ -10,10 +10,15 @@
 //   nist     nist/test, nist/variant (strings), nist/passed, nist/applicable, nist/p_uniformity (series),
 //            nist/histogram (rows × 10)
 //   cost     cost.ns_per_number, cost.step_seconds, cost.run_seconds, cost.rng_share, cost.numbers_per_step
+//   bilayer  <obs>_mean/_std/_sem for obs in temperature, pressure, pressure_xx/yy/zz, tension (L_z[P_zz −
+//            (P_xx+P_yy)/2]), tension_conservative, thickness (head peak to peak), head_separation, tail_order;
+//            lipids_out_max, momentum_drift; series profile/z (relative to the midplane), profile/head,
+//            profile/tail, profile/water, order_by_bond, series/step, series/temperature, series/tension
 #include <cstdint>
 #include <utility>
 #include <vector>
 
+#include "dpdrng/dpd/bilayer.hpp"
 #include "dpdrng/dpd/config.hpp"
 #include "dpdrng/dpd/result.hpp"
 #include "dpdrng/study/cell_result.hpp"
@@ -30,6 +35,9 @@ struct TapPlan {
 TapPlan plan_taps(const Cell& cell, const StudyConfig& config, int words_per_pair);
 
 dpd::WaterConfig engine_config(const Cell& cell, const StudyConfig& config, int threads, const TapPlan& plan);
+// The membrane scene's engine config: noise, Δt, steps, pairs and threads from the cell and [scene]; the warm-up
+// is min(1 000, equilibrate) steps at the scene's dt_warmup, as for `dpdrng simulate --scene bilayer`.
+dpd::BilayerConfig bilayer_engine_config(const Cell& cell, const StudyConfig& config, int threads);
 // The engine's own checks (box larger than 2 r_c, …) on every distinct scene of the config, before anything runs:
 // a scene the engine would refuse is a bad config (InputError naming "scene"), not a sweep of failed cells.
 void validate_scene(const StudyConfig& config);
@@ -44,7 +52,11 @@ void record_correlations(const dpd::Taps& taps, const TestParams& tests, CellRes
 // The NIST battery on the bits of the tapped NIST steps, with the second-level counts.
 void record_nist(const dpd::Taps& taps, const TapPlan& plan, const TestParams& tests, int threads, CellResult& out);
 
-// All of the above: the study's production MeasureFn.
+// A bilayer run's observables. A run that lost a lipid finished but is recorded with status "disrupted" (its
+// structure is not the bilayer's), one that blew up as "unstable"; both keep the observables up to then.
+void record_bilayer(const dpd::BilayerResult& run, CellResult& out);
+
+// All of the above (water), or the bilayer run and record_bilayer: the study's production MeasureFn.
 CellResult measure_cell(const Cell& cell, const StudyConfig& config, int threads);
 
 }  // namespace dpdrng::study

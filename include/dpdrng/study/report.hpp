@@ -33,6 +33,20 @@ std::string cost_markdown(const Analysis& a);
 // The NIST reference suite's finalAnalysisReport layout for one variant's battery.
 std::string nist_final_analysis_report(const VariantReport& v, double alpha);
 
+// The membrane scene's report ([scene] name = "bilayer"; write_report hands over to it): no pass fractions or NIST,
+// the membrane's observables per generator with 95 % CIs, paired differences from the reference beside the
+// MT-vs-MT noise floor, density profiles and T / Σ charts.
+std::filesystem::path write_bilayer_report(const StudyConfig& config, const std::vector<CellResult>& cells,
+                                           const std::filesystem::path& study_dir, const ReportOptions& options);
+// One row per variant: replica mean ± 95 % CI of T, P_xx, P_yy, P_zz, Σ, thickness and tail order.
+std::string bilayer_table_markdown(const Analysis& a, const std::string& distribution);
+std::string bilayer_table_csv(const Analysis& a);
+// One row per variant and observable: value, reference, paired difference [95 % CI], paired-t P, noise floor.
+std::string bilayer_differences_markdown(const Analysis& a, const std::string& distribution);
+std::string bilayer_differences_csv(const Analysis& a);
+// Density profiles overlaid, and one chart per observable with CI error bars; returns the chart names made.
+std::vector<std::string> write_bilayer_charts(const Analysis& a, const std::filesystem::path& dir, std::ostream* log);
+
 // Writes the chart data and gnuplot scripts under dir and runs gnuplot; returns the chart base names made.
 std::vector<std::string> write_charts(const Analysis& a, const std::vector<CellResult>& cells,
                                       const std::filesystem::path& dir, std::ostream* log);

@@ -25,6 +25,7 @@ struct RunSummary {
   std::size_t resumed = 0;    // already stored, not recomputed
   std::size_t computed = 0;
   std::size_t unstable = 0;
+  std::size_t disrupted = 0;  // bilayer runs that lost a lipid
   std::size_t failed = 0;
   double seconds = 0;
 };

@@ -1,0 +1,103 @@
+// The membrane scene's cell: one dpd::run_bilayer and its observables. No taps: the generators' statistics are
+// the water scene's job, so a bilayer cell costs only its run.
+#include <algorithm>
+#include <cstdio>
+
+#include "dpdrng/rng/registry.hpp"
+#include "dpdrng/study/measure.hpp"
+
+namespace dpdrng::study {
+namespace {
+
+std::vector<double> thin(const std::vector<double>& v, std::size_t points) {
+  if (v.size() <= points) return v;
+  std::vector<double> out;
+  const std::size_t stride = (v.size() + points - 1) / points;
+  for (std::size_t k = 0; k < v.size(); k += stride) out.push_back(v[k]);
+  return out;
+}
+
+void put(CellResult& out, const std::string& name, const dpd::Stat& s) {
+  out.scalars[name + "_mean"] = s.mean;
+  out.scalars[name + "_std"] = s.std;
+  out.scalars[name + "_sem"] = s.sem;
+}
+
+// "disrupted at step 1234: …" / "unstable at step 1234: …" → 1234 (or −1 if the text says no step).
+long step_of(const std::string& status) {
+  long step = -1;
+  const auto at = status.find(" at step ");
+  if (at != std::string::npos) std::sscanf(status.c_str() + at + 9, "%ld", &step);
+  return step;
+}
+
+}  // namespace
+
+dpd::BilayerConfig bilayer_engine_config(const Cell& cell, const StudyConfig& config, int threads) {
+  const auto& s = config.scene;
+  dpd::BilayerConfig b;
+  b.particles = s.particles;
+  b.gamma = s.gamma;
+  b.kT = s.kT;
+  b.lambda = s.lambda;
+  b.dt = cell.dt;
+  b.steps = s.steps;
+  b.equilibrate = s.equilibrate;
+  b.warmup = std::min<std::int64_t>(b.warmup, s.equilibrate);
+  b.pairs = dpd::parse_pair_mode(s.pairs);
+  b.generator = rng::validated(rng::GeneratorSpec{cell.generator, cell.rounds, rng::kPaperTeaKey});
+  b.seeding = cell.reference ? rng::Seeding::distance : rng::parse_seeding(cell.seeding);  // ignored by a stream
+  b.distribution = rng::parse_distribution(cell.distribution);
+  // As for water: one initial state per replica, shared by every generator (paired comparison).
+  b.seed = cell.seed;
+  b.init_seed = cell.seed;
+  b.threads = threads;
+  b.series = true;
+  return b;
+}
+
+void record_bilayer(const dpd::BilayerResult& r, CellResult& out) {
+  if (!r.ok()) {
+    out.status = r.status.rfind("disrupted", 0) == 0 ? "disrupted" : "unstable";
+    out.unstable_step = out.status == "unstable" ? static_cast<long>(r.steps_done) : step_of(r.status);
+    out.reason = r.status;
+  }
+  auto& sc = out.scalars;
+  sc["steps_done"] = double(r.steps_done);
+  put(out, "temperature", r.temperature);
+  put(out, "pressure", r.pressure);
+  put(out, "pressure_xx", r.pressure_diag[0]);
+  put(out, "pressure_yy", r.pressure_diag[1]);
+  put(out, "pressure_zz", r.pressure_diag[2]);
+  put(out, "tension", r.tension);
+  put(out, "tension_conservative", r.tension_conservative);
+  put(out, "thickness", r.thickness);
+  put(out, "head_separation", r.head_separation);
+  put(out, "tail_order", r.tail_order);
+  sc["lipids_out_max"] = r.lipids_out_max;
+  sc["momentum_drift"] = r.momentum_drift;
+  sc["box_z"] = r.box[2];
+  if (!r.profile.z.empty()) {
+    out.series["profile/z"] = r.profile.z;
+    out.series["profile/head"] = r.profile.head;
+    out.series["profile/tail"] = r.profile.tail;
+    out.series["profile/water"] = r.profile.water;
+  }
+  if (!r.order_by_bond.empty()) out.series["order_by_bond"] = r.order_by_bond;
+  if (!r.series.step.empty()) {
+    std::vector<double> steps(r.series.step.begin(), r.series.step.end());
+    out.series["series/step"] = thin(steps, 1000);
+    out.series["series/temperature"] = thin(r.series.temperature, 1000);
+    out.series["series/tension"] = thin(r.series.tension, 1000);
+  }
+  const auto& t = r.timings;
+  sc["cost.run_seconds"] = t.total_s;
+  sc["cost.step_seconds"] = t.per_step_s;
+  sc["cost.ns_per_number"] = t.ns_per_number;
+  sc["cost.rng_share"] = t.rng_share_estimate;
+  sc["cost.particle_steps_per_second"] = t.particle_steps_per_s;
+  sc["cost.bonded_seconds"] = r.bonded_s;
+  if (r.steps_done > 0) sc["cost.numbers_per_step"] = double(t.random_numbers) / double(r.steps_done);
+}
+
+}  // namespace dpdrng::study

@@ -1,0 +1,22 @@
+#pragma once
+// Pieces the water report (report.cpp) and the bilayer report (report_bilayer.cpp) share; internal to src/study.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "dpdrng/study/analysis.hpp"
+#include "dpdrng/study/cell_result.hpp"
+#include "dpdrng/study/config.hpp"
+
+namespace dpdrng::study::detail {
+
+void write_text(const std::filesystem::path& p, const std::string& text);  // throws if it cannot
+std::string num(double x);                                                  // "%.6g", "" when not finite
+std::string cells_csv(const std::vector<CellResult>& cells);                // every scalar of every cell
+std::string chart_link(const std::string& name, const std::string& alt);    // PNG inline, SVG and script linked
+// Title, description, cells stored and broken, scene, replicas and config hash.
+std::string report_header(const StudyConfig& config, const Analysis& a, const std::vector<CellResult>& cells);
+// The "Unstable and failed cells" section, with every cell's notes.
+std::string broken_cells_markdown(const std::vector<CellResult>& cells);
+
+}  // namespace dpdrng::study::detail

@@ -1,0 +1,44 @@
+#pragma once
+// Runs the built `dpdrng` binary (DPDRNG_CLI_PATH) through the shell for the CLI contract tests.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+namespace dpdrng::cli_test {
+
+struct Result {
+  int code = -1;
+  std::string out, err;
+};
+
+inline std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+// A scratch path unique to the running test.
+inline std::string scratch(const std::string& suffix) {
+  const auto* t = ::testing::UnitTest::GetInstance()->current_test_info();
+  return ::testing::TempDir() + "dpdrng_" + t->test_suite_name() + "_" + t->name() + suffix;
+}
+
+// Runs `dpdrng <args>`, stdout and stderr to files; code -1 if it did not exit normally (a crash).
+inline Result run(const std::string& args) {
+  const std::string out = scratch(".out"), err = scratch(".err");
+  const std::string cmd = "\"" DPDRNG_CLI_PATH "\" " + args + " > \"" + out + "\" 2> \"" + err + "\"";
+  const int status = std::system(cmd.c_str());
+  Result r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = slurp(out);
+  r.err = slurp(err);
+  std::remove(out.c_str());
+  std::remove(err.c_str());
+  return r;
+}
+
+}  // namespace dpdrng::cli_test

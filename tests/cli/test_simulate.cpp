@@ -1,0 +1,218 @@
+// The CLI contract of `dpdrng simulate` (water and --scene bilayer) and `simulate-bilayer`, run as the built
+// binary: bad parameters exit 2 with one line naming the parameter; a run exits 0 with the issue's JSON keys,
+// a run that blows up included (its status says where and why: data, not an error).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "run_cli.hpp"
+
+using namespace dpdrng::cli_test;
+using nlohmann::json;
+
+namespace {
+
+// 64 beads (box 2.77 > 2 r_c), 20 steps: a few milliseconds.
+const std::string kTiny = "simulate -n 64 --steps 20 --equilibrate 10 -q ";
+// The bilayer scene is 5400 beads; 20 steps (10 warm-up) take well under a second.
+const std::string kTinyBilayer = "simulate --scene bilayer --steps 20 --equilibrate 10 -q ";
+
+struct BadCase {
+  std::string args;
+  std::string names;  // what the one-line reason must mention
+};
+
+void expect_refused(const BadCase& c) {
+  const Result r = run(c.args);
+  EXPECT_EQ(r.code, 2) << c.args;
+  EXPECT_TRUE(r.out.empty()) << c.args;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << c.args << ": " << r.err;
+  EXPECT_NE(r.err.find(c.names), std::string::npos) << c.args << ": " << r.err;
+}
+
+json run_json(const std::string& args) {
+  const Result r = run(args + " --json");
+  EXPECT_EQ(r.code, 0) << args << ": " << r.err;
+  return json::parse(r.out);
+}
+
+std::set<std::string> keys(const json& j) {
+  std::set<std::string> k;
+  for (auto it = j.begin(); it != j.end(); ++it) k.insert(it.key());
+  return k;
+}
+
+TEST(CliSimulate, BadWaterParametersExitTwoNamingTheParameter) {
+  const std::vector<BadCase> cases = {
+      {kTiny + "--density 0", "density"},        {kTiny + "--density -3", "density"},
+      {kTiny + "--dt 0", "dt"},                  {kTiny + "--dt -0.01", "dt"},
+      {kTiny + "--dt 1e-400", "dt"},             {kTiny + "--density nan", "density"},
+      {kTiny + "--a nan", "--a"},                {kTiny + "--a inf", "--a"},
+      {kTiny + "--a -inf", "--a"},               {kTiny + "--rc nan", "rc"},
+      {kTiny + "--gamma nan", "gamma"},          {kTiny + "--gamma -1", "gamma"},
+      {kTiny + "--kT inf", "kT"},                {kTiny + "--kT 0", "kT"},
+      {kTiny + "--dt nan", "dt"},                {kTiny + "--lambda nan", "lambda"},
+      {kTiny + "--lambda 2", "lambda"},          {kTiny + "--skin nan", "skin"},
+      {kTiny + "--skin inf --pairs cells", "skin"}, {kTiny + "--density 1e400", "density"},
+      {kTiny + "--rounds 0", "rounds"},          {kTiny + "-g tea32 --rounds 65", "rounds"},
+      {kTiny + "-g philox4x32 --rounds 17", "rounds"}, {kTiny + "--rounds -1", "rounds"},
+      {kTiny + "--rounds 99999999999", "rounds"}, {kTiny + "-g bogus", "generator"},
+      {kTiny + "--seeding bogus", "seeding"},    {kTiny + "--seeding counter", "seeding"},
+      {kTiny + "--distribution bogus", "distribution"}, {kTiny + "--scene bogus", "scene"},
+      {kTiny + "--pairs bogus", "pairs"},        {kTiny + "--threads -1", "threads"},
+      {kTiny + "--seed -1", "seed"},             {kTiny + "--init-seed -5", "init-seed"},
+      {kTiny + "--sample-every 0", "sample_every"}, {kTiny + "--key 1,2,3", "key"},
+      {kTiny + "--integrator bogus", "integrator"},
+      {"simulate -q --particles 1", "particles"}, {"simulate -q -n 8", "particles/density"},
+      {"simulate -q -n 64 --steps -5 --equilibrate 0", "steps"},
+      {"simulate -q -n 64 --steps 0 --equilibrate 0", "steps"},
+      {"simulate -q -n 64 --steps 1e3", "steps"},
+      {"simulate -q -n 64 --steps 100 --equilibrate 100", "equilibrate"},
+      {"simulate -q -n 64 --steps 100 --equilibrate 200", "equilibrate"},
+      {"simulate -q -n 64 --steps 100 --equilibrate -1", "equilibrate"},
+  };
+  for (const auto& c : cases) expect_refused(c);
+}
+
+TEST(CliSimulate, BadBilayerParametersExitTwoNamingTheParameter) {
+  const std::vector<BadCase> cases = {
+      {kTinyBilayer + "--dt 0", "dt"},            {kTinyBilayer + "--dt nan", "dt"},
+      {kTinyBilayer + "--kT 0", "kT"},            {kTinyBilayer + "--gamma inf", "gamma"},
+      {kTinyBilayer + "--lambda nan", "lambda"},  {kTinyBilayer + "--skin nan --pairs all", "skin"},
+      {kTinyBilayer + "--rounds 0", "rounds"},    {kTinyBilayer + "-g bogus", "generator"},
+      {kTinyBilayer + "--seeding bogus", "seeding"}, {kTinyBilayer + "--distribution nope", "distribution"},
+      {kTinyBilayer + "--pairs bogus", "pairs"},  {kTinyBilayer + "--threads -2", "threads"},
+      {kTinyBilayer + "--seed -1", "seed"},       {kTinyBilayer + "--sample-every 0", "sample_every"},
+      {kTinyBilayer + "--density 3", "density"},  {kTinyBilayer + "--a 25", "--a"},
+      {kTinyBilayer + "--particles 100", "particles"}, {kTinyBilayer + "--rc 1", "rc"},
+      {kTinyBilayer + "--integrator shardlow", "integrator"},
+      {"simulate --scene bilayer -q --steps -1 --equilibrate 0", "steps"},
+      {"simulate --scene bilayer -q --steps 20 --equilibrate 20", "equilibrate"},
+      {"simulate-bilayer -q --steps 20 --equilibrate 10 --warmup 5 --dt-warmup inf", "dt-warmup"},
+      {"simulate-bilayer -q --steps 20 --equilibrate 10 --warmup 5 --dt -1", "dt"},
+      {"simulate-bilayer -q --steps 20 --equilibrate 10 --warmup 30", "warmup"},
+  };
+  for (const auto& c : cases) expect_refused(c);
+}
+
+// The issue's keys, and no others: the record is what scripts and the study read.
+TEST(CliSimulate, TinyWaterRunGivesTheIssuesJson) {
+  const json j = run_json(kTiny);
+  EXPECT_EQ(j.at("status"), "ok");
+  EXPECT_EQ(j.at("integrator"), "mvv");
+  EXPECT_EQ(j.at("steps_done"), 20);
+  for (const char* k : {"temperature_mean", "temperature_std", "pressure_mean", "pressure_conservative_mean",
+                        "diffusion_coefficient"})
+    EXPECT_TRUE(j.at(k).is_number()) << k;
+  EXPECT_GT(j.at("temperature_mean").get<double>(), 0.5);  // k_BT = 1 fluid, 10 samples
+  EXPECT_LT(j.at("temperature_mean").get<double>(), 2.0);
+  const std::set<std::string> want = {
+      "box_length", "diffusion_coefficient", "diffusion_coefficient_sem", "distribution", "generator", "integrator",
+      "momentum_drift_per_bead", "momentum_final", "msd_fit", "pairs", "particles", "pressure",
+      "pressure_conservative", "pressure_conservative_diag", "pressure_conservative_mean",
+      "pressure_conservative_sem", "pressure_diag", "pressure_mean", "pressure_sem", "seeding", "status",
+      "steps_done", "temperature", "temperature_mean", "temperature_sem", "temperature_std", "timings",
+      "velocity_pdf_error_rate", "velocity_pdf_error_rate_measured_T", "velocity_pdf_error_rate_xyz"};
+  EXPECT_EQ(keys(j), want);
+  const std::set<std::string> timings = {
+      "force_s", "list_builds", "ns_per_number", "ns_per_zeta", "particle_steps_per_s", "per_step_s",
+      "production_particle_steps_per_s", "production_s", "random_numbers", "rng_share_estimate", "threads",
+      "total_s", "zetas"};
+  EXPECT_EQ(keys(j.at("timings")), timings);
+  EXPECT_EQ(keys(j.at("temperature")), (std::set<std::string>{"mean", "std", "sem", "n"}));
+}
+
+TEST(CliSimulate, TinyBilayerRunGivesItsJsonAlikeFromEitherCommand) {
+  const json a = run_json(kTinyBilayer + "--threads 1");
+  const json b = run_json("simulate-bilayer -q --steps 20 --equilibrate 10 --warmup 10 --threads 1");
+  EXPECT_EQ(a.at("status"), "ok");
+  const std::set<std::string> want = {
+      "bilayer_thickness", "bilayer_thickness_sem", "box", "distribution", "generator", "head_separation",
+      "head_separation_sem", "lipids", "lipids_out_max", "membrane_tension", "membrane_tension_conservative",
+      "membrane_tension_conservative_sem", "membrane_tension_convention", "membrane_tension_sem",
+      "membrane_tension_without_bend_virial", "membrane_tension_without_bond_virial", "momentum_drift_per_bead",
+      "momentum_final", "pairs", "particles", "pressure_diag", "pressure_mean", "pressure_sem",
+      "pressure_xx_mean", "pressure_xx_sem", "pressure_yy_mean", "pressure_yy_sem", "pressure_zz_mean",
+      "pressure_zz_sem", "scene", "seeding", "status", "steps_done", "tail_order", "tail_order_sem",
+      "tail_order_stat", "temperature", "temperature_mean", "temperature_sem", "tension", "thickness", "timings"};
+  EXPECT_EQ(keys(a), want);
+  EXPECT_TRUE(keys(a.at("timings")).count("bonded_s"));
+  EXPECT_FALSE(keys(a.at("timings")).count("production_s"));
+  // --scene bilayer keeps the scene's defaults (cells, its seeds): the same run as simulate-bilayer.
+  json a_phys = a, b_phys = b;
+  a_phys.erase("timings"), b_phys.erase("timings");
+  EXPECT_EQ(a_phys, b_phys);
+}
+
+TEST(CliSimulate, SeriesWritesItsFiles) {
+  const std::string dir = scratch("_series");
+  std::filesystem::remove_all(dir);
+  const Result r = run(kTiny + "--series \"" + dir + "\"");
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* f : {"series.csv", "velocity_pdf.csv", "msd.csv", "rdf.csv"})
+    EXPECT_TRUE(std::filesystem::is_regular_file(std::filesystem::path(dir) / f)) << f;
+  const std::string series = slurp(dir + "/series.csv");
+  EXPECT_EQ(series.rfind("step,temperature,pressure,pressure_conservative,px,py,pz\n", 0), 0u) << series;
+  EXPECT_EQ(std::count(series.begin(), series.end(), '\n'), 21);  // header + one row per step
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CliSimulate, BilayerSeriesWritesItsFiles) {
+  const std::string dir = scratch("_series");
+  std::filesystem::remove_all(dir);
+  const Result r = run(kTinyBilayer + "--series \"" + dir + "\"");
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* f : {"profile.csv", "series.csv", "order.csv"})
+    EXPECT_TRUE(std::filesystem::is_regular_file(std::filesystem::path(dir) / f)) << f;
+  std::filesystem::remove_all(dir);
+}
+
+// A blow-up is data: exit 0, the JSON record, status "unstable at step k: reason". The 200-bead cells cases
+// (3 cells a side) crashed in the cell grid on non-finite positions before System::wrap parked such beads.
+TEST(CliSimulate, BlowUpIsAStatusNotACrash) {
+  struct Case {
+    std::string args, status;
+  };
+  const std::vector<Case> cases = {
+      {kTiny + "--dt 5", "unstable at step 1: temperature runaway"},
+      {kTiny + "--a 1e6", "unstable at step 1: temperature runaway"},
+      {kTiny + "--a 1e300", "unstable at step 1: non-finite velocities or forces"},
+      {"simulate -q -n 200 --steps 20 --equilibrate 10 --pairs cells --a 1e300",
+       "unstable at step 1: non-finite velocities or forces"},
+      {kTiny + "--integrator shardlow --dt 1e300", "unstable at step 1: non-finite velocities or forces"},
+      {"simulate -q -n 200 --steps 20 --equilibrate 10 --pairs cells --integrator shardlow --a 1e300",
+       "unstable at step 1: non-finite velocities or forces"},
+      {kTinyBilayer + "--dt 5", "unstable at step 11: temperature runaway"},
+  };
+  for (const auto& c : cases) {
+    const Result r = run(c.args + " --json");
+    ASSERT_EQ(r.code, 0) << c.args << ": " << r.err;
+    const json j = json::parse(r.out);
+    EXPECT_EQ(j.at("status").get<std::string>().rfind(c.status, 0), 0u) << c.args << ": " << j.at("status");
+  }
+}
+
+TEST(CliSimulate, ShardlowIntegratorIsChosenAndReported) {
+  const json j = run_json(kTiny + "--integrator shardlow --dt 0.06");
+  EXPECT_EQ(j.at("status"), "ok");
+  EXPECT_EQ(j.at("integrator"), "shardlow");
+  // S1 reports no D+R virial (equal but for the rounding of two virial sums)
+  EXPECT_NEAR(j.at("pressure_mean").get<double>(), j.at("pressure_conservative_mean").get<double>(), 1e-9);
+  const Result human = run(kTiny + "--integrator shardlow");
+  EXPECT_NE(human.out.find(", integrator shardlow"), std::string::npos) << human.out;
+}
+
+TEST(CliSimulate, HumanOutputNamesTheObservables) {
+  const Result r = run(kTiny);
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* line : {"scene water: 64 beads", "status                 ok (20 steps)", "temperature k_BT",
+                           "pressure (conservative)", "diffusion coefficient", "momentum drift / bead"})
+    EXPECT_NE(r.out.find(line), std::string::npos) << line << "\n" << r.out;
+}
+
+}  // namespace

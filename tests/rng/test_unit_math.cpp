@@ -1,0 +1,175 @@
+// Accuracy of Box–Muller's own log and cos (rng/unit_math.hpp) against MPFR at 160 bits, in ulp of the double
+// result, over the inputs Box–Muller actually feeds them: u1 in (0, 1] and u2 in [0, 1) on the 2^-53 grid
+// (to_unit_open0 / to_unit) and on the 2^-32 grid (32-bit halves), random points plus the edges where the
+// reductions switch branch. The bounds are stated per function; measured worst cases are recorded as properties.
+#include <gtest/gtest.h>
+#include <mpfr.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "dpdrng/rng/distribution.hpp"
+#include "dpdrng/rng/simd.hpp"
+
+using namespace dpdrng::rng;
+
+namespace {
+
+class Mp {
+ public:
+  Mp() { mpfr_init2(v, 160); }
+  ~Mp() { mpfr_clear(v); }
+  Mp(const Mp&) = delete;
+  Mp& operator=(const Mp&) = delete;
+  mpfr_t v;
+};
+
+// |got − ref| in units of the last place of the double nearest ref (ulp = 2^(e−53) for ref in [2^(e−1), 2^e)).
+double ulps(double got, const Mp& ref) {
+  if (mpfr_zero_p(ref.v)) return got == 0.0 ? 0.0 : INFINITY;
+  Mp d;
+  mpfr_set_d(d.v, got, MPFR_RNDN);
+  mpfr_sub(d.v, d.v, ref.v, MPFR_RNDN);
+  mpfr_abs(d.v, d.v, MPFR_RNDN);
+  mpfr_mul_2si(d.v, d.v, 53 - mpfr_get_exp(ref.v), MPFR_RNDN);
+  return mpfr_get_d(d.v, MPFR_RNDN);
+}
+
+void ref_log(Mp& out, double u) {
+  mpfr_set_d(out.v, u, MPFR_RNDN);
+  mpfr_log(out.v, out.v, MPFR_RNDN);
+}
+
+void ref_cos_2pi(Mp& out, double u) {
+  Mp t;
+  mpfr_const_pi(out.v, MPFR_RNDN);
+  mpfr_set_d(t.v, u, MPFR_RNDN);
+  mpfr_mul(out.v, out.v, t.v, MPFR_RNDN);
+  mpfr_mul_2si(out.v, out.v, 1, MPFR_RNDN);
+  mpfr_cos(out.v, out.v, MPFR_RNDN);
+}
+
+std::vector<std::uint64_t> random_words(int n, std::uint64_t seed) {
+  std::mt19937_64 pick(seed);
+  std::vector<std::uint64_t> w(n);
+  for (auto& x : w) x = pick();
+  return w;
+}
+
+// u1 as Box–Muller makes it: both grids, random words, every power of two down to the grid's smallest value
+// (and a few neighbours: small u1 is rare among random words but gives the largest |z|), 1 and just below,
+// and both sides of the reduction boundary √½.
+std::vector<double> log_inputs() {
+  std::vector<double> u;
+  for (std::uint64_t w : random_words(60000, 11)) {
+    u.push_back(to_unit_open0(w));
+    u.push_back((static_cast<double>(w & 0xffffffffu) + 1.0) * 0x1p-32);
+  }
+  for (int k = 0; k <= 53; ++k) {
+    const double p = std::ldexp(1.0, -k);
+    u.push_back(p);
+    if (p + 0x1p-53 <= 1.0) u.push_back(p + 0x1p-53);
+    if (p - 0x1p-53 > 0.0) u.push_back(p - 0x1p-53);
+  }
+  for (int k = 1; k <= 200; ++k) {
+    u.push_back(k * 0x1p-53);
+    u.push_back(k * 0x1p-32);
+    u.push_back(1.0 - (k - 1) * 0x1p-53);
+    u.push_back(1.0 - (k - 1) * 0x1p-32);
+  }
+  double lo = std::numbers::sqrt2 / 2, hi = lo;
+  for (int k = 0; k < 200; ++k) u.push_back(lo = std::nextafter(lo, 0.0)), u.push_back(hi = std::nextafter(hi, 1.0));
+  return u;
+}
+
+// u2 on both grids, random, and around every quarter and eighth: the quadrant switches and cos's zeros and ±1.
+std::vector<double> cos_inputs() {
+  std::vector<double> u;
+  for (std::uint64_t w : random_words(60000, 12)) {
+    u.push_back(to_unit(w));
+    u.push_back(static_cast<double>(w >> 32) * 0x1p-32);
+  }
+  for (int e = 0; e < 8; ++e) {
+    const double c = e / 8.0;
+    for (int k = 0; k <= 100; ++k) {
+      for (double step : {0x1p-53, 0x1p-32}) {
+        if (c + k * step < 1.0) u.push_back(c + k * step);
+        if (c - k * step >= 0.0) u.push_back(c - k * step);
+      }
+    }
+  }
+  return u;
+}
+
+TEST(UnitMath, LogUnitWithinOneUlpOfMpfr) {
+  Mp ref;
+  double worst = 0, worst_at = 0;
+  for (double u : log_inputs()) {
+    ref_log(ref, u);
+    const double e = ulps(math::log_unit(u), ref);
+    if (e > worst) worst = e, worst_at = u;
+  }
+  EXPECT_LE(worst, 1.0) << "at u = " << worst_at;
+  RecordProperty("log_unit_max_ulp", std::to_string(worst));
+  std::printf("log_unit: max %.3f ulp (at u = %a)\n", worst, worst_at);
+}
+
+TEST(UnitMath, Cos2PiWithinTwoAndAHalfUlpOfMpfr) {
+  Mp ref;
+  double worst = 0, worst_at = 0;
+  for (double u : cos_inputs()) {
+    ref_cos_2pi(ref, u);
+    const double got = math::cos_2pi(u);
+    if (u == 0.25 || u == 0.75) {  // the exact zeros: MPFR's 2π·u is not exactly π/2, the reduction is
+      EXPECT_EQ(got, 0.0) << u;
+      continue;
+    }
+    const double e = ulps(got, ref);
+    if (e > worst) worst = e, worst_at = u;
+  }
+  EXPECT_LE(worst, 2.5) << "at u = " << worst_at;
+  RecordProperty("cos_2pi_max_ulp", std::to_string(worst));
+  std::printf("cos_2pi: max %.3f ulp (at u = %a)\n", worst, worst_at);
+  EXPECT_EQ(math::cos_2pi(0.0), 1.0);
+  EXPECT_EQ(math::cos_2pi(0.5), -1.0);
+}
+
+// The whole Box–Muller number, z = √(−2 log u1)·cos(2πu2), from both block shapes: relative errors add up
+// (log ≤ 1 ulp, halved by the sqrt, cos ≤ 2.5, sqrt and product 0.5 each), so 4 ulp of z.
+TEST(UnitMath, BoxMullerWithinFourUlpOfMpfr) {
+  Mp r, c;
+  double worst = 0;
+  auto check = [&](double u1, double u2, double z) {
+    ref_log(r, u1);
+    mpfr_mul_si(r.v, r.v, -2, MPFR_RNDN);
+    mpfr_sqrt(r.v, r.v, MPFR_RNDN);
+    ref_cos_2pi(c, u2);
+    mpfr_mul(r.v, r.v, c.v, MPFR_RNDN);
+    if (mpfr_zero_p(r.v)) return;
+    worst = std::max(worst, ulps(z, r));
+  };
+  for (std::uint64_t w : random_words(40000, 13)) {
+    check((static_cast<double>(w & 0xffffffffu) + 1.0) * 0x1p-32, static_cast<double>(w >> 32) * 0x1p-32,
+          box_muller(std::array<std::uint64_t, 1>{w}));
+    const std::uint64_t w2 = w * 0x9e3779b97f4a7c15ull;
+    check(to_unit_open0(w), to_unit(w2), box_muller(std::array<std::uint64_t, 2>{w, w2}));
+  }
+  EXPECT_LE(worst, 4.0);
+  RecordProperty("box_muller_max_ulp", std::to_string(worst));
+  std::printf("box_muller: max %.3f ulp\n", worst);
+}
+
+// The batched Gaussian's sqrt: the SIMD instruction must equal std::sqrt lane for lane (both correctly rounded).
+TEST(UnitMath, SimdSqrtEqualsStdSqrt) {
+  const auto u = log_inputs();
+  for (std::size_t k = 0; k + 8 <= u.size(); k += 8) {
+    const auto got = simd::sqrt(simd::load<simd::f64x8>(u.data() + k));
+    for (int j = 0; j < 8; ++j) ASSERT_EQ(got[j], std::sqrt(u[k + j])) << u[k + j];
+  }
+}
+
+}  // namespace
