@@ -122,7 +122,6 @@ void simulate_bilayer(const CLI::App& sub, const dpd::WaterConfig& w, const RunO
   if (given("--lambda")) c.lambda = w.lambda;
   if (given("--gamma")) c.gamma = w.gamma;
   if (given("--kT")) c.kT = w.kT;
-  if (given("--skin")) c.skin = w.skin;
   if (given("--seed")) c.seed = w.seed;
   if (given("--init-seed")) c.init_seed = w.init_seed;
   if (given("--sample-every")) c.sample_every = w.sample_every;

@@ -58,10 +58,9 @@ const CLI::Validator& not_negative() {
 }
 }  // namespace
 
-void RunOptions::add_noise_and_output(CLI::App& app, const Help& help, double& skin, std::uint64_t& seed,
+void RunOptions::add_noise_and_output(CLI::App& app, const Help& help, std::uint64_t& seed,
                                       std::uint64_t& init_seed, int& threads, int& sample_every) {
   app.add_option("--pairs", pairs, help.pairs)->check(CLI::IsMember({"all", "cells"}))->capture_default_str();
-  add_real(app, "--skin", skin, "Verlet skin (cells)");
   gen.add_to(app);
   app.add_option("--seeding", seeding, "distance (the paper) or pair-step")->capture_default_str();
   app.add_option("--distribution", distribution, "gauss (Box-Muller) or uniform (sqrt3(2u-1))")

@@ -81,7 +81,6 @@ void BilayerConfig::validate() const {
   if (warmup < 0 || warmup > steps) bad("warmup", std::to_string(warmup) + " (0..steps)");
   if (equilibrate < warmup || equilibrate >= steps)
     bad("equilibrate", std::to_string(equilibrate) + " (warmup <= equilibrate < steps)");
-  if (pairs == PairMode::cells) positive(skin, "skin");
   rng::validated(generator);
   if (seeding == rng::Seeding::counter) bad("seeding", "'counter' makes streams; pair noise needs distance or pair-step");
   if (threads < 0) bad("threads", "must not be negative");

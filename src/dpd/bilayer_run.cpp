@@ -26,7 +26,6 @@ WaterConfig pair_config(const BilayerConfig& c, std::uint64_t seed) {
   w.kT = c.kT;
   w.gamma = c.gamma;
   w.pairs = c.pairs;
-  w.skin = c.skin;
   w.generator = c.generator;
   w.seeding = c.seeding;
   w.distribution = c.distribution;

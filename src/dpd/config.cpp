@@ -55,8 +55,6 @@ void WaterConfig::validate() const {
   // Minimum image gives each pair once only if the box is wider than two cut-offs.
   if (!(box_length() > 2 * rc))
     bad("particles/density", "box length " + std::to_string(box_length()) + " must exceed 2*rc");
-  finite(skin, "skin");  // unused with pairs=all, but a non-finite value is a mistake either way
-  if (pairs == PairMode::cells) positive(skin, "skin");
   rng::validated(generator);  // names the generator and its round range in the error
   if (seeding == rng::Seeding::counter) bad("seeding", "'counter' makes streams; pair noise needs distance or pair-step");
   if (threads < 0) bad("threads", "must not be negative");

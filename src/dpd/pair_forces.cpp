@@ -19,7 +19,7 @@ DpdKernel make_kernel(double a, double rc, double gamma, double kT, double dt) {
 namespace {
 template <class Noise>
 std::unique_ptr<PairForces> loop(Noise noise, const WaterConfig& cfg, const DpdKernel& kernel, std::size_t n) {
-  return std::make_unique<PairLoop<Noise>>(std::move(noise), kernel, cfg.pairs, cfg.skin, cfg.threads, n,
+  return std::make_unique<PairLoop<Noise>>(std::move(noise), kernel, cfg.pairs, cfg.threads, n,
                                            cfg.taps.pairs);
 }
 

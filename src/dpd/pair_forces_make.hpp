@@ -14,7 +14,7 @@ std::unique_ptr<PairForces> make_for_generator(const G& gen, const WaterConfig& 
                                                std::size_t n) {
   auto build = [&]<rng::Seeding S, rng::Distribution D>() -> std::unique_ptr<PairForces> {
     HashNoise<rng::PairNoise<G, S, D>> noise{{gen, cfg.seed}};
-    return std::make_unique<PairLoop<decltype(noise)>>(noise, kernel, cfg.pairs, cfg.skin, cfg.threads, n,
+    return std::make_unique<PairLoop<decltype(noise)>>(noise, kernel, cfg.pairs, cfg.threads, n,
                                                        cfg.taps.pairs);
   };
   using rng::Distribution, rng::Seeding;

@@ -3,19 +3,11 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "dpdrng/rng/registry.hpp"
 #include "dpdrng/study/measure.hpp"
+#include "measure_common.hpp"
 
 namespace dpdrng::study {
 namespace {
-
-std::vector<double> thin(const std::vector<double>& v, std::size_t points) {
-  if (v.size() <= points) return v;
-  std::vector<double> out;
-  const std::size_t stride = (v.size() + points - 1) / points;
-  for (std::size_t k = 0; k < v.size(); k += stride) out.push_back(v[k]);
-  return out;
-}
 
 void put(CellResult& out, const std::string& name, const dpd::Stat& s) {
   out.scalars[name + "_mean"] = s.mean;
@@ -36,23 +28,8 @@ long step_of(const std::string& status) {
 dpd::BilayerConfig bilayer_engine_config(const Cell& cell, const StudyConfig& config, int threads) {
   const auto& s = config.scene;
   dpd::BilayerConfig b;
-  b.particles = s.particles;
-  b.gamma = s.gamma;
-  b.kT = s.kT;
-  b.lambda = s.lambda;
-  b.dt = cell.dt;
-  b.steps = s.steps;
-  b.equilibrate = s.equilibrate;
+  detail::set_run(b, cell, s, threads);
   b.warmup = std::min<std::int64_t>(b.warmup, s.equilibrate);
-  b.pairs = dpd::parse_pair_mode(s.pairs);
-  b.generator = rng::validated(rng::GeneratorSpec{cell.generator, cell.rounds, rng::kPaperTeaKey});
-  b.seeding = cell.reference ? rng::Seeding::distance : rng::parse_seeding(cell.seeding);  // ignored by a stream
-  b.distribution = rng::parse_distribution(cell.distribution);
-  // As for water: one initial state per replica, shared by every generator (paired comparison).
-  b.seed = cell.seed;
-  b.init_seed = cell.seed;
-  b.threads = threads;
-  b.series = true;
   return b;
 }
 
@@ -86,18 +63,12 @@ void record_bilayer(const dpd::BilayerResult& r, CellResult& out) {
   if (!r.order_by_bond.empty()) out.series["order_by_bond"] = r.order_by_bond;
   if (!r.series.step.empty()) {
     std::vector<double> steps(r.series.step.begin(), r.series.step.end());
-    out.series["series/step"] = thin(steps, 1000);
-    out.series["series/temperature"] = thin(r.series.temperature, 1000);
-    out.series["series/tension"] = thin(r.series.tension, 1000);
+    out.series["series/step"] = detail::thin(steps, 1000);
+    out.series["series/temperature"] = detail::thin(r.series.temperature, 1000);
+    out.series["series/tension"] = detail::thin(r.series.tension, 1000);
   }
-  const auto& t = r.timings;
-  sc["cost.run_seconds"] = t.total_s;
-  sc["cost.step_seconds"] = t.per_step_s;
-  sc["cost.ns_per_number"] = t.ns_per_number;
-  sc["cost.rng_share"] = t.rng_share_estimate;
-  sc["cost.particle_steps_per_second"] = t.particle_steps_per_s;
   sc["cost.bonded_seconds"] = r.bonded_s;
-  if (r.steps_done > 0) sc["cost.numbers_per_step"] = double(t.random_numbers) / double(r.steps_done);
+  detail::record_costs(r.timings, r.steps_done, out);
 }
 
 }  // namespace dpdrng::study

@@ -1,11 +1,11 @@
 // The engine side of a cell: which steps and pairs to tap, the WaterConfig, and the RunResult's observables.
 #include <algorithm>
-#include <cstdio>
 #include <set>
 
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/rng/registry.hpp"
 #include "dpdrng/study/measure.hpp"
+#include "measure_common.hpp"
 
 namespace dpdrng::study {
 
@@ -43,25 +43,9 @@ TapPlan plan_taps(const Cell& cell, const StudyConfig& config, int words_per_pai
 dpd::WaterConfig engine_config(const Cell& cell, const StudyConfig& config, int threads, const TapPlan& plan) {
   const auto& s = config.scene;
   dpd::WaterConfig w;
-  w.particles = s.particles;
+  detail::set_run(w, cell, s, threads);
   w.density = s.density;
   w.a = s.a;
-  w.kT = s.kT;
-  w.gamma = s.gamma;
-  w.lambda = s.lambda;
-  w.dt = cell.dt;
-  w.steps = s.steps;
-  w.equilibrate = s.equilibrate;
-  w.pairs = dpd::parse_pair_mode(s.pairs);
-  w.generator = rng::validated(rng::GeneratorSpec{cell.generator, cell.rounds, rng::kPaperTeaKey});
-  w.seeding = cell.reference ? rng::Seeding::distance : rng::parse_seeding(cell.seeding);  // ignored by a stream
-  w.distribution = rng::parse_distribution(cell.distribution);
-  w.seed = cell.seed;
-  // The same initial state for every generator of a replica: differences between generators are then not
-  // diluted by different starting points (paired comparison).
-  w.init_seed = cell.seed;
-  w.threads = threads;
-  w.series = true;
   std::set<std::int64_t> raw(plan.chi2_steps.begin(), plan.chi2_steps.end());
   raw.insert(plan.nist_steps.begin(), plan.nist_steps.end());
   w.taps.raw_steps.assign(raw.begin(), raw.end());
@@ -85,8 +69,8 @@ void validate_scene(const StudyConfig& config) {
   }
 }
 
-namespace {
-// At most ~`points` samples of a long series, evenly strided: the chart needs the shape, not every step.
+namespace detail {
+
 std::vector<double> thin(const std::vector<double>& v, std::size_t points) {
   if (v.size() <= points) return v;
   std::vector<double> out;
@@ -94,7 +78,18 @@ std::vector<double> thin(const std::vector<double>& v, std::size_t points) {
   for (std::size_t k = 0; k < v.size(); k += stride) out.push_back(v[k]);
   return out;
 }
-}  // namespace
+
+void record_costs(const dpd::Timings& t, std::int64_t steps_done, CellResult& out) {
+  auto& sc = out.scalars;
+  sc["cost.run_seconds"] = t.total_s;
+  sc["cost.step_seconds"] = t.per_step_s;
+  sc["cost.ns_per_number"] = t.ns_per_number;
+  sc["cost.rng_share"] = t.rng_share_estimate;
+  sc["cost.particle_steps_per_second"] = t.particle_steps_per_s;
+  if (steps_done > 0) sc["cost.numbers_per_step"] = double(t.random_numbers) / double(steps_done);
+}
+
+}  // namespace detail
 
 void record_run(const dpd::RunResult& r, CellResult& out) {
   if (!r.ok()) {
@@ -136,16 +131,10 @@ void record_run(const dpd::RunResult& r, CellResult& out) {
   }
   if (!r.series.temperature.empty()) {
     std::vector<double> steps(r.series.step.begin(), r.series.step.end());
-    out.series["series/step"] = thin(steps, 1000);
-    out.series["series/temperature"] = thin(r.series.temperature, 1000);
+    out.series["series/step"] = detail::thin(steps, 1000);
+    out.series["series/temperature"] = detail::thin(r.series.temperature, 1000);
   }
-  const auto& t = r.timings;
-  sc["cost.run_seconds"] = t.total_s;
-  sc["cost.step_seconds"] = t.per_step_s;
-  sc["cost.ns_per_number"] = t.ns_per_number;
-  sc["cost.rng_share"] = t.rng_share_estimate;
-  sc["cost.particle_steps_per_second"] = t.particle_steps_per_s;
-  if (r.steps_done > 0) sc["cost.numbers_per_step"] = double(t.random_numbers) / double(r.steps_done);
+  detail::record_costs(r.timings, r.steps_done, out);
 }
 
 }  // namespace dpdrng::study

@@ -1,6 +1,7 @@
 // report.md: the tables and charts of one study, with what each verdict rests on.
 #include "dpdrng/study/report.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <ctime>
 #include <fstream>
@@ -27,6 +28,20 @@ std::string num(double x) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.6g", x);
   return buf;
+}
+
+std::string fmt(const char* f, double x) {
+  if (!std::isfinite(x)) return "–";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, x);
+  return buf;
+}
+
+std::vector<std::string> distributions_of(const Analysis& a) {
+  std::vector<std::string> dists;
+  for (const auto& v : a.variants)
+    if (std::find(dists.begin(), dists.end(), v.key.distribution) == dists.end()) dists.push_back(v.key.distribution);
+  return dists;
 }
 
 // Every scalar of every cell, one row a cell: the flat view for spreadsheets.
@@ -146,10 +161,7 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
   const fs::path dir = study_dir / "report";
   fs::create_directories(dir / "charts");
   const Analysis a = analyse(config, cells);
-
-  std::vector<std::string> dists;
-  for (const auto& v : a.variants)
-    if (std::find(dists.begin(), dists.end(), v.key.distribution) == dists.end()) dists.push_back(v.key.distribution);
+  const std::vector<std::string> dists = detail::distributions_of(a);
 
   write(dir / "summary.csv", summary_csv(a));
   write(dir / "pass_table.csv", pass_table_csv(a));

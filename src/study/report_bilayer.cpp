@@ -2,7 +2,6 @@
 // from MT19937 beside the MT-vs-MT noise floor, and the profile and CI charts.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <sstream>
 
 #include "dpdrng/study/report.hpp"
@@ -12,12 +11,7 @@ namespace dpdrng::study {
 namespace fs = std::filesystem;
 namespace {
 
-std::string fmt(const char* f, double x) {
-  if (!std::isfinite(x)) return "–";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, x);
-  return buf;
-}
+using detail::fmt;
 
 std::string with_ci(const ReplicaMean& m) {
   if (m.n == 0) return "–";
@@ -122,9 +116,7 @@ fs::path write_bilayer_report(const StudyConfig& config, const std::vector<CellR
   const fs::path dir = study_dir / "report";
   fs::create_directories(dir / "charts");
   const Analysis a = analyse(config, cells);
-  std::vector<std::string> dists;
-  for (const auto& v : a.variants)
-    if (std::find(dists.begin(), dists.end(), v.key.distribution) == dists.end()) dists.push_back(v.key.distribution);
+  const std::vector<std::string> dists = detail::distributions_of(a);
 
   detail::write_text(dir / "summary.csv", summary_csv(a));
   detail::write_text(dir / "bilayer_table.csv", bilayer_table_csv(a));

@@ -1,5 +1,6 @@
 #pragma once
-// Pieces the water report (report.cpp) and the bilayer report (report_bilayer.cpp) share; internal to src/study.
+// Pieces the water report (report.cpp, report_tables.cpp) and the bilayer report (report_bilayer.cpp) share;
+// internal to src/study.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -12,7 +13,10 @@ namespace dpdrng::study::detail {
 
 void write_text(const std::filesystem::path& p, const std::string& text);  // throws if it cannot
 std::string num(double x);                                                  // "%.6g", "" when not finite
+std::string fmt(const char* f, double x);                                   // printf format f, "–" when not finite
 std::string cells_csv(const std::vector<CellResult>& cells);                // every scalar of every cell
+// The distributions the analysis holds, in the order they first appear: one report section each.
+std::vector<std::string> distributions_of(const Analysis& a);
 std::string chart_link(const std::string& name, const std::string& alt);    // PNG inline, SVG and script linked
 // Title, description, cells stored and broken, scene, replicas and config hash.
 std::string report_header(const StudyConfig& config, const Analysis& a, const std::vector<CellResult>& cells);

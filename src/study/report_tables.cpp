@@ -4,16 +4,13 @@
 #include <sstream>
 
 #include "dpdrng/study/report.hpp"
+#include "report_common.hpp"
 
 namespace dpdrng::study {
 namespace {
 
-std::string fmt(const char* f, double x) {
-  if (!std::isfinite(x)) return "–";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, x);
-  return buf;
-}
+using detail::fmt;
+using detail::num;
 
 std::string pass_cell(const PassSummary& p) {
   if (!p.available || p.trials == 0) return "–";
@@ -44,13 +41,6 @@ std::string csv_quote(const std::string& s) {
   std::string q = "\"";
   for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
   return q + "\"";
-}
-
-std::string num(double x) {
-  if (!std::isfinite(x)) return "";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", x);
-  return buf;
 }
 
 const char* kObservableNames[][2] = {

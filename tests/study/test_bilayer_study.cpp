@@ -18,6 +18,7 @@
 #include "dpdrng/study/config.hpp"
 #include "dpdrng/study/report.hpp"
 #include "dpdrng/study/store.hpp"
+#include "config_text.hpp"
 
 using namespace dpdrng::study;
 namespace fs = std::filesystem;
@@ -44,21 +45,8 @@ steps = 300
 equilibrate = 100
 )";
 
-std::string error_of(const std::string& text) {
-  try {
-    parse_config(text, "b.toml");
-  } catch (const dpdrng::InputError& e) {
-    return e.what();
-  }
-  return "";
-}
-
-std::string with(const std::string& base, const std::string& from, const std::string& to) {
-  std::string s = base;
-  const auto at = s.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  return s.replace(at, from.size(), to);
-}
+using config_text::error_of;
+using config_text::with;
 
 std::string read(const fs::path& p) {
   std::ifstream in(p);

@@ -7,6 +7,7 @@
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/study/config.hpp"
 #include "dpdrng/study/sweep.hpp"
+#include "config_text.hpp"
 
 using namespace dpdrng::study;
 
@@ -29,22 +30,8 @@ equilibrate = 10
 ttest_pairs = 4
 )";
 
-// The message of the InputError that parsing `text` throws, or "" if it parses.
-std::string error_of(const std::string& text) {
-  try {
-    parse_config(text, "cfg.toml");
-  } catch (const dpdrng::InputError& e) {
-    return e.what();
-  }
-  return "";
-}
-
-std::string with(const std::string& base, const std::string& from, const std::string& to) {
-  std::string s = base;
-  const auto at = s.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  return s.replace(at, from.size(), to);
-}
+using config_text::error_of;
+using config_text::with;
 
 }  // namespace
 

@@ -19,7 +19,7 @@ struct GeneratorOptions {
 };
 
 // Refuses NaN and ±inf at parse time, naming the option: a config's own checks cover only the fields that
-// matter for the mode chosen (the skin only with pairs=cells), but a non-finite number is always a typo.
+// matter for the mode chosen, but a non-finite number is always a typo.
 const CLI::Validator& finite_number();
 // A real-valued option with the finite check and its default shown in --help.
 CLI::Option* add_real(CLI::App& app, const std::string& name, double& value, const std::string& help);
@@ -49,7 +49,7 @@ struct RunOptions {
   }
 
  private:
-  void add_noise_and_output(CLI::App& app, const Help& help, double& skin, std::uint64_t& seed,
+  void add_noise_and_output(CLI::App& app, const Help& help, std::uint64_t& seed,
                             std::uint64_t& init_seed, int& threads, int& sample_every);
 };
 
@@ -63,7 +63,7 @@ void add_thermostat_options(CLI::App& app, Config& c) {
 
 template <class Config>
 void RunOptions::add_to(CLI::App& app, Config& c, const Help& help) {
-  add_noise_and_output(app, help, c.skin, c.seed, c.init_seed, c.threads, c.sample_every);
+  add_noise_and_output(app, help, c.seed, c.init_seed, c.threads, c.sample_every);
 }
 
 }  // namespace dpdrng::cli

@@ -54,7 +54,6 @@ struct BilayerConfig {
   double dt_warmup = 0.005, dt = 0.01;
   std::int64_t warmup = 1000, steps = 61000, equilibrate = 11000;
   PairMode pairs = PairMode::cells;
-  double skin = 0.3;
   // Noise = generator ∘ seeding ∘ distribution (mt19937: the reference stream, see run_bilayer)
   rng::GeneratorSpec generator{};
   rng::Seeding seeding = rng::Seeding::distance;

@@ -54,7 +54,6 @@ struct WaterConfig {
   std::int64_t equilibrate = 500;
   // Pair search
   PairMode pairs = PairMode::all;
-  double skin = 0.3;  // Verlet skin in cells mode
   // Noise = generator ∘ seeding ∘ distribution
   rng::GeneratorSpec generator{};
   rng::Seeding seeding = rng::Seeding::distance;

@@ -42,11 +42,10 @@ inline void geometry(const double* __restrict x, const double* __restrict y, con
 template <class Noise>
 class PairLoop final : public PairForces {
  public:
-  PairLoop(Noise noise, const DpdKernel& kernel, PairMode mode, double skin, int threads, std::size_t n,
+  PairLoop(Noise noise, const DpdKernel& kernel, PairMode mode, int threads, std::size_t n,
            std::vector<std::pair<std::uint32_t, std::uint32_t>> tap_pairs)
       : noise_(std::move(noise)), k_(kernel), mode_(mode), threads_(threads > 0 ? threads : omp_get_max_threads()),
         tap_pairs_(std::move(tap_pairs)) {
-    (void)skin;  // cells mode re-sorts every step: there is no list to keep alive
     scratch_.resize(threads_);
     if (mode_ == PairMode::all) {
       rows_.resize(n);
