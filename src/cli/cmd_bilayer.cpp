@@ -71,7 +71,8 @@ const bool registered = register_command(41, [](CLI::App& root) {
       "Grafmueller et al. (2009) lipids: 146 H3(T6)2 in a 10 x 10 x 18 box with water, 5400 beads, gamma 4.5,\n"
       "a_ij HH 30 HT 35 HW 30 TT 10 TW 75 WW 25, bonds 128/0.5, bending 15. dt_warmup for the first --warmup\n"
       "steps, then --dt. Tension = Lz[Pzz - (Pxx+Pyy)/2] (positive = stretched). --series DIR writes\n"
-      "profile.csv (H/T/W densities vs z - z_mid), series.csv and order.csv.");
+      "profile.csv (H/T/W densities vs z - z_mid), series.csv and order.csv. `dpdrng simulate --scene bilayer`\n"
+      "runs the same scene with the common options (and the warm-up clipped to --equilibrate).");
   auto& c = a->cfg;
   sub->add_option("--steps", c.steps, "steps in all (warm-up included)")->capture_default_str();
   sub->add_option("--equilibrate", c.equilibrate, "steps not sampled (warm-up included)")->capture_default_str();
@@ -80,7 +81,7 @@ const bool registered = register_command(41, [](CLI::App& root) {
   add_real(*sub, "--dt-warmup", c.dt_warmup, "time step of the warm-up");
   add_thermostat_options(*sub, c);
   a->run.add_to(*sub, c,
-                {"cells (Verlet lists) or all", "sampling interval of profiles and order",
+                {"cells (linked cells, the default) or all", "sampling interval of profiles and order",
                  "directory for profiles and time series (CSV)"});
   sub->callback([a] {
     dpd::BilayerConfig cfg = a->cfg;
@@ -117,6 +118,9 @@ void simulate_bilayer(const CLI::App& sub, const dpd::WaterConfig& w, const RunO
   dpd::BilayerConfig c;
   if (given("--steps")) c.steps = w.steps;
   if (given("--equilibrate")) c.equilibrate = w.equilibrate;
+  if (c.equilibrate >= c.steps)
+    throw InputError("scene bilayer: --steps " + std::to_string(c.steps) + " leaves no production after --equilibrate " +
+                     std::to_string(c.equilibrate) + " (warm-up included); give a smaller --equilibrate");
   c.warmup = std::min<std::int64_t>(c.warmup, c.equilibrate);
   if (given("--dt")) c.dt = w.dt;
   if (given("--lambda")) c.lambda = w.lambda;

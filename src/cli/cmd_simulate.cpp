@@ -106,7 +106,7 @@ const bool registered = register_command(40, [](CLI::App& root) {
   sub->add_option("--steps", c.steps, "steps")->capture_default_str();
   sub->add_option("--equilibrate", c.equilibrate, "equilibration steps (not sampled)")->capture_default_str();
   a->run.add_to(*sub, c,
-                {"all (every pair, as the paper) or cells (Verlet lists)",
+                {"all (every pair, as the paper) or cells (linked cells, sorted every step)",
                  "sampling interval of the distributions",
                  "directory for time series, histograms and g(r) (CSV)"});
   sub->callback([a, sub] {

@@ -1,5 +1,7 @@
 #include "dpdrng/dpd/neighbours.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -46,6 +48,21 @@ void CellGrid::stencil(int c, int out[27]) const {
 }
 
 void SortedCells::build(const System& s, double rc) {
+#pragma omp single
+  shape(s, rc, omp_get_num_threads());
+  const std::size_t t = omp_get_thread_num(), nt = omp_get_num_threads();
+  const std::size_t beads = s.size(), lo = beads * t / nt, hi = beads * (t + 1) / nt;
+  std::uint32_t* next = counts_.data() + t * ncell_;
+  count(s, lo, hi, next);
+#pragma omp barrier
+#pragma omp single
+  offsets(static_cast<int>(nt));
+  for (std::size_t i = lo; i < hi; ++i) order_[next[cell_[i]]++] = static_cast<std::uint32_t>(i);
+#pragma omp barrier
+}
+
+// The grid for this box, and room for a team of `team` threads.
+void SortedCells::shape(const System& s, double rc, int team) {
   // The smallest counts for which the 13 forward neighbours are distinct cells; z needs an even count so
   // that layers of one colour never write to the same layer.
   constexpr int kMin[3] = {3, 3, 4};
@@ -60,25 +77,43 @@ void SortedCells::build(const System& s, double rc) {
   const bool reshaped = n[0] != n_[0] || n[1] != n_[1] || n[2] != n_[2] || builds_ == 0;
   for (int d = 0; d < 3; ++d) n_[d] = n[d], inv_w_[d] = n[d] / s.box.L[d];
   ncell_ = n[0] * n[1] * n[2];
-
-  const std::size_t beads = s.size();
-  cell_.resize(beads);
-  order_.resize(beads);
-  start_.assign(std::size_t(ncell_) + 1, 0);
-  for (std::size_t i = 0; i < beads; ++i) {
-    // Positions are wrapped into [0, L); the clamps only guard x·n/L rounding to n (or a stray −0).
-    int c[3];
-    const double r[3] = {s.x[i], s.y[i], s.z[i]};
-    for (int d = 0; d < 3; ++d) c[d] = std::clamp(static_cast<int>(r[d] * inv_w_[d]), 0, n_[d] - 1);
-    cell_[i] = static_cast<std::uint32_t>((c[2] * n_[1] + c[1]) * n_[0] + c[0]);
-    ++start_[cell_[i] + 1];
-  }
-  for (int c = 0; c < ncell_; ++c) start_[c + 1] += start_[c];
-  for (std::size_t i = 0; i < beads; ++i) order_[start_[cell_[i]]++] = static_cast<std::uint32_t>(i);
-  for (int c = ncell_; c > 0; --c) start_[c] = start_[c - 1];  // the fill advanced every start to its end
-  start_[0] = 0;
+  cell_.resize(s.size());
+  order_.resize(s.size());
+  start_.resize(std::size_t(ncell_) + 1);
+  counts_.resize(std::size_t(team) * ncell_);
   if (reshaped) fill_forward();
   ++builds_;
+}
+
+std::uint32_t SortedCells::cell_index(double x, double y, double z) const {
+  // Positions are wrapped into [0, L); the clamps only guard x·n/L rounding to n (or a stray −0).
+  int c[3];
+  const double r[3] = {x, y, z};
+  for (int d = 0; d < 3; ++d) c[d] = std::clamp(static_cast<int>(r[d] * inv_w_[d]), 0, n_[d] - 1);
+  return static_cast<std::uint32_t>((c[2] * n_[1] + c[1]) * n_[0] + c[0]);
+}
+
+// Cells of beads [lo, hi), and how many of them each cell gets.
+void SortedCells::count(const System& s, std::size_t lo, std::size_t hi, std::uint32_t* counts) {
+  std::fill(counts, counts + ncell_, 0u);
+  for (std::size_t i = lo; i < hi; ++i) {
+    cell_[i] = cell_index(s.x[i], s.y[i], s.z[i]);
+    ++counts[cell_[i]];
+  }
+}
+
+// Cell starts, and each thread's first place in each cell: cell by cell, the threads' ranges in order.
+void SortedCells::offsets(int team) {
+  std::uint32_t place = 0;
+  for (int c = 0; c < ncell_; ++c) {
+    start_[c] = place;
+    for (int t = 0; t < team; ++t) {
+      std::uint32_t& k = counts_[std::size_t(t) * ncell_ + c];
+      const std::uint32_t m = k;
+      k = place, place += m;
+    }
+  }
+  start_[ncell_] = place;
 }
 
 void SortedCells::fill_forward() {

@@ -41,18 +41,34 @@ std::array<std::uint64_t, W> block_at(const std::uint64_t* words, std::size_t ca
 
 // Plain loops over the scalar draw's own functions, which GCC vectorises at -O3, so every number equals the
 // scalar draw<> bit for bit. A loop calling std::sqrt does not vectorise (libm's sqrt may set errno), so the
-// Gaussian goes eight calls at a time: a vectorised loop for −2·log u1 and cos(2π·u2), then the SIMD sqrt
-// (correctly rounded, like std::sqrt). Blocks of eight, not two passes over the chunk, let the out-of-order
-// core run one block's sqrt on the divider while the next block's polynomials use the FMA units.
-template <int W>
-void map_words(Distribution dist, std::span<const std::uint64_t> words, std::span<double> out) {
-  const std::uint64_t* w = words.data();
-  double* o = out.data();
-  const std::size_t n = out.size();
-  if (dist == Distribution::uniform) {
-    for (std::size_t c = 0; c < n; ++c) o[c] = uniform_unit_variance(block_at<W>(w, c));
-    return;
+// Gaussian goes a register at a time: a vectorised loop for −2·log u1 and cos(2π·u2), then the SIMD sqrt
+// (correctly rounded, like std::sqrt). Blocks of one register, not two passes over the chunk, let the
+// out-of-order core run one block's sqrt on the divider while the next block's polynomials use the FMA units.
+void gauss_words32(const std::uint64_t* w, std::size_t n, double* o) {
+  std::size_t c = 0;
+  for (; c + 16 <= n; c += 16) {
+    alignas(64) float radius2[16], cosine[16];
+    for (std::size_t j = 0; j < 16; ++j) {
+      const BoxMullerParts32 p = box_muller_parts32(w[c + j]);
+      radius2[j] = p.radius2;
+      cosine[j] = p.cosine;
+    }
+    const simd::f32x16 root = simd::sqrt(simd::load<simd::f32x16>(radius2));
+    const simd::f32x16 cos = simd::load<simd::f32x16>(cosine);
+    const auto lo = [](const simd::f32x16& v) {
+      return __builtin_convertvector(__builtin_shufflevector(v, v, 0, 1, 2, 3, 4, 5, 6, 7), simd::f64x8);
+    };
+    const auto hi = [](const simd::f32x16& v) {
+      return __builtin_convertvector(__builtin_shufflevector(v, v, 8, 9, 10, 11, 12, 13, 14, 15), simd::f64x8);
+    };
+    simd::store(o + c, lo(root) * lo(cos));
+    simd::store(o + c + 8, hi(root) * hi(cos));
   }
+  for (; c < n; ++c) o[c] = box_muller(std::array<std::uint64_t, 1>{w[c]});
+}
+
+template <int W>
+void gauss_words64(const std::uint64_t* w, std::size_t n, double* o) {
   std::size_t c = 0;
   for (; c + 8 <= n; c += 8) {
     alignas(64) double radius2[8], cosine[8];
@@ -64,6 +80,20 @@ void map_words(Distribution dist, std::span<const std::uint64_t> words, std::spa
     simd::store(o + c, simd::sqrt(simd::load<simd::f64x8>(radius2)) * simd::load<simd::f64x8>(cosine));
   }
   for (; c < n; ++c) o[c] = box_muller(block_at<W>(w, c));
+}
+
+template <int W>
+void map_words(Distribution dist, std::span<const std::uint64_t> words, std::span<double> out) {
+  const std::uint64_t* w = words.data();
+  double* o = out.data();
+  const std::size_t n = out.size();
+  if (dist == Distribution::uniform) {
+    for (std::size_t c = 0; c < n; ++c) o[c] = uniform_unit_variance(block_at<W>(w, c));
+  } else if constexpr (W == 1) {
+    gauss_words32(w, n, o);
+  } else {
+    gauss_words64<W>(w, n, o);
+  }
 }
 
 template <class G>

@@ -74,6 +74,16 @@ std::vector<double> values_of(const std::vector<const CellResult*>& cells, const
   return v;
 }
 
+// Root mean square of the cells' "<x>_sem" beside a "<x>_mean" (0 when the observable has none).
+double rms_sem(const std::vector<const CellResult*>& cells, const std::string& name) {
+  const std::string suffix = "_mean";
+  if (name.size() <= suffix.size() || name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0) return 0;
+  const auto sem = values_of(cells, name.substr(0, name.size() - suffix.size()) + "_sem");
+  double sum = 0;
+  for (double e : sem) sum += e * e;
+  return sem.empty() ? 0 : std::sqrt(sum / double(sem.size()));
+}
+
 Comparison compare_scalar(const std::string& name, bool absolute, const VariantReport& v, const VariantReport& ref) {
   Comparison c;
   c.observable = name;
@@ -91,9 +101,11 @@ Comparison compare_scalar(const std::string& name, bool absolute, const VariantR
   c.ref_sd = sd(y);
   const double scale = absolute ? 1.0 : std::abs(c.ref);
   c.error_rate = std::abs(c.value - c.ref) / scale;
-  // The 1σ size of |mean_G − mean_MT| if G were MT, from the MT replicas' spread.
-  c.noise_floor =
-      std::isfinite(c.ref_sd) ? c.ref_sd * std::sqrt(1.0 / double(c.n) + 1.0 / double(c.n_ref)) / scale : NAN;
+  // The 1σ size of |mean_G − mean_MT| if G were MT, from the MT replicas' spread or, if larger, from the
+  // runs' own block standard errors: four replicas estimate a spread with three degrees of freedom, and an
+  // unlucky small one (it happened: 0.0004 where the runs' SEMs were 0.0025) would inflate every ratio.
+  const double spread = std::max(std::isfinite(c.ref_sd) ? c.ref_sd : 0.0, rms_sem(ref.cells, name));
+  c.noise_floor = spread > 0 ? spread * std::sqrt(1.0 / double(c.n) + 1.0 / double(c.n_ref)) / scale : NAN;
   c.p_value = welch_p(x, y);
   if (!std::isfinite(c.p_value)) c.note = "too few replicas for a P-value";
   return c;

@@ -206,7 +206,8 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
   md << "## Physical observables against MT\n\n"
      << "Each cell: error rate (noise floor). Scalars (T, its fluctuation, P, D, the velocity PDF's error against "
         "Maxwell–Boltzmann): |mean − mean_MT| / |mean_MT| over replicas; noise floor = 1σ of that difference "
-        "expected from the MT replicas' spread; P-value from Welch's t-test. Curves (velocity PDF, g(r)): mean "
+        "expected from the MT replicas' spread or, if larger, from the runs' own block standard errors (4 replicas "
+        "estimate a spread poorly); P-value from Welch's t-test. Curves (velocity PDF, g(r)): mean "
         "relative deviation of each replica from the other MT replicas' mean, against the same quantity for MT "
         "replicas themselves (the noise floor); one-sided Welch test. **Bold** = differs at α.\n\n";
   for (const auto& d : dists) {

@@ -153,8 +153,8 @@ fs::path write_bilayer_report(const StudyConfig& config, const std::vector<CellR
 
   md << "## Differences from MT19937\n\n"
      << "difference = mean over replicas of (generator − MT) on the same initial state, with its 95 % CI and the "
-        "paired t-test; noise floor = 1σ of a difference of means expected from the MT replicas' spread (as for k_BT "
-        "in the water study). **Bold** = differs at α = "
+        "paired t-test; noise floor = 1σ of a difference of means expected from the MT replicas' spread or, if larger, "
+        "the runs' own block standard errors (as in the water study). **Bold** = differs at α = "
      << a.alpha << " before the Bonferroni correction. Density profiles: mean relative deviation of each replica's "
         "profile from the other MT replicas' mean, over bins above a tenth of the MT peak, against the same for MT's "
         "own replicas.\n\n";

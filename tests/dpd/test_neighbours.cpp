@@ -93,6 +93,24 @@ TEST(SortedCells, LayersOfOneColourWriteDisjointCells) {
   }
 }
 
+// The sort runs on a team, each thread placing a contiguous range of beads: the serial sort's order (by cell,
+// then by bead index) and cell bounds for any team, an odd one and one larger than the cores included.
+TEST(SortedCells, SameSortForAnyThreadCount) {
+  const System s = fluid(3000, 10.0);
+  SortedCells one;
+  one.build(s, 1.0);
+  for (int c = 0; c < one.cells(); ++c)
+    for (std::uint32_t k = one.begin(c) + 1; k < one.end(c); ++k) ASSERT_LT(one.order()[k - 1], one.order()[k]);
+  for (int threads : {2, 3, 8}) {
+    SortedCells many;
+#pragma omp parallel num_threads(threads)
+    many.build(s, 1.0);
+    EXPECT_EQ(many.order(), one.order()) << "threads " << threads;
+    for (int c = 0; c < one.cells(); ++c)
+      ASSERT_TRUE(many.begin(c) == one.begin(c) && many.end(c) == one.end(c)) << "threads " << threads << " cell " << c;
+  }
+}
+
 namespace {
 struct Forces {
   std::vector<double> f;
@@ -129,8 +147,8 @@ TEST(CellsLoop, SameForcesAsAllPairs) {
 }
 
 // One force evaluation of a 3 000-bead box (10 × 10 × 10 cells: five layers per colour) gives the same bits
-// on 1, 2 and 3 threads (3 runs as one: too few layers), for a hash and for the mt19937 stream (whose slots
-// are counted per cell before the layers run).
+// on 1, 2 and 3 threads (3 runs the layers as one: too few of them; the sort and copies still use 3), for a
+// hash and for the mt19937 stream (whose slots are counted per cell before the layers run).
 TEST(CellsLoop, SameBitsForAnyThreadCount) {
   const System s = fluid(3000, 10.0);
   for (const char* gen : {"tea32", "mt19937"}) {

@@ -66,6 +66,25 @@ TEST(StudyAnalysis, APlantedTemperatureShiftIsCalledADifference) {
   EXPECT_EQ(find(a, "tea32", 8).verdict, "indistinguishable from MT at this sample size");
 }
 
+// Four replicas can agree by chance far more closely than their runs' own errors allow; the floor then falls
+// back on those errors. Here MT's temperatures are identical (spread 0) and every run claims a block SEM of
+// 0.002: the floor must be 0.002·√(1/6 + 1/6) / 1.03, not 0 (which would make every ratio infinite).
+TEST(StudyAnalysis, NoiseFloorFallsBackOnTheRunsOwnErrors) {
+  const StudyConfig cfg = parse_config(kConfig, "c.toml");
+  auto cells = fake_cells(cfg, 0.0);
+  for (auto& c : cells) {
+    c.scalars["temperature_sem"] = 0.002;
+    if (c.cell.reference) c.scalars["temperature_mean"] = 1.03;
+  }
+  const Analysis a = analyse(cfg, cells);
+  for (const auto& o : find(a, "tea32", 8).observables)
+    if (o.observable == "temperature_mean") {
+      EXPECT_NEAR(o.noise_floor, 0.002 * std::sqrt(2.0 / 6) / 1.03, 1e-12);
+      return;
+    }
+  ADD_FAILURE() << "no temperature comparison";
+}
+
 TEST(StudyAnalysis, PassFractionsPoolReplicasAndKeepTea64OutputsApart) {
   const StudyConfig cfg = parse_config(kConfig, "c.toml");
   const Analysis a = analyse(cfg, fake_cells(cfg, 0.0));

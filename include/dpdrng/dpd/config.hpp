@@ -13,7 +13,7 @@
 namespace dpdrng::dpd {
 
 // all: every pair every step, the random number drawn even beyond r_c (the paper's choice, so that the RNG's
-// share of the cost shows). cells: Verlet lists built from linked cells; only pairs inside r_c draw numbers.
+// share of the cost shows). cells: linked cells, re-sorted every step; only pairs inside r_c draw numbers.
 enum class PairMode { all, cells };
 PairMode parse_pair_mode(std::string_view name);  // throws InputError
 std::string_view to_string(PairMode m);

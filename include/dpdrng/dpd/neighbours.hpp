@@ -1,6 +1,6 @@
 #pragma once
 // Linked cells (g(r)) and the sorted, coloured cells of the pair loop. Everything here is built in a fixed
-// order (serial counting sorts, neighbour cells in a fixed stencil order), so the pair order, and with it the
+// order (stable counting sorts, neighbour cells in a fixed stencil order), so the pair order, and with it the
 // mt19937 reference's slot of every pair, never depends on the thread count.
 #include <cstdint>
 #include <vector>
@@ -37,11 +37,16 @@ class CellGrid {
 // disjoint beads, and so do the odd ones. Even layers run in parallel (each layer's cells in order on one
 // thread), then odd layers: every bead receives its force contributions in the same order whatever the
 // thread count, with two barriers a step, and the pair order (cell by cell, in cell index order) is fixed.
+// The sort can be shared by a team: each thread counts and places a contiguous range of beads, its places
+// within a cell coming after those of the lower ranges, so the order is the serial sort's for any team.
 class SortedCells {
  public:
   static constexpr int kForward = 13;
+  // Below this many beads, sorting and copying them serially costs less than a parallel region's fork.
+  static constexpr std::size_t kParallelBeads = 1024;
   // Cells at least rc wide. If the box is too small for the grid (fewer than 3 cells along x or y, or 4
-  // along z), one cell holds every bead and owns every pair.
+  // along z), one cell holds every bead and owns every pair. Called outside a parallel region, or by every
+  // thread of one (orphaned worksharing: callers can run more work in the same region); returns with a barrier.
   void build(const System& s, double rc);
   bool gridded() const { return ncell_ > 1; }
   int cells() const { return ncell_; }
@@ -59,11 +64,16 @@ class SortedCells {
   std::uint64_t builds() const { return builds_; }
 
  private:
+  void shape(const System& s, double rc, int team);
   void fill_forward();
+  std::uint32_t cell_index(double x, double y, double z) const;
+  void count(const System& s, std::size_t lo, std::size_t hi, std::uint32_t* counts);
+  void offsets(int team);
   int n_[3] = {1, 1, 1};
   int ncell_ = 1;
   double inv_w_[3] = {0, 0, 0};
   std::vector<std::uint32_t> start_, order_, cell_;
+  std::vector<std::uint32_t> counts_;  // per thread and cell: beads, then the thread's next place
   std::vector<std::int32_t> forward_;  // kForward per cell, fixed order
   std::uint64_t builds_ = 0;
 };

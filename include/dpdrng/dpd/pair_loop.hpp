@@ -3,7 +3,8 @@
 //   all:   row i does its partners j > i in two passes: geometry (separation, r², and the generator call for
 //          every pair, as the paper does), then forces for the pairs inside r_c. The split keeps the first
 //          pass free of branches so the compiler can vectorise the hash. Reactions are added serially.
-//   cells: the beads are sorted by cell every step (neighbours.hpp) and copied into sorted arrays; each cell
+//   cells: the beads are sorted by cell every step (neighbours.hpp) and copied into sorted arrays, both
+//          shared by the team (every sorted slot written once, so any team gives the same arrays); each cell
 //          does its own pairs and those with its 13 forward neighbours, writing both forces at once; even
 //          z-layers of cells run in parallel (disjoint writes), then odd ones. Forces go back to the
 //          System in its own order. Generator inputs use the beads' own indices, so nothing but the
@@ -216,19 +217,36 @@ class PairLoop final : public PairForces {
     forces(c, i, k, sc, rows_[i]);
   }
 
-  // Sorted copies of what the pairs read (positions, the dissipative force's velocities, indices, types).
+  void resize_sorted(std::size_t n) {
+    for (auto* a : {&xs_, &ys_, &zs_, &vxs_, &vys_, &vzs_, &fxs_, &fys_, &fzs_}) a->resize(n);
+    types_.resize(n);
+  }
+
+  // Sorted copies of what the pairs read (positions, the dissipative force's velocities, indices, types),
+  // and zeroed sorted forces. Shared by the team of the sort when called inside its region (the scattered
+  // reads cost a one-thread step ~4 % at 24 000 beads); each sorted slot is written by one iteration.
   void gather(const System& s, VelocityView v) {
     const std::size_t n = s.size();
-    for (auto* a : {&xs_, &ys_, &zs_, &vxs_, &vys_, &vzs_}) a->resize(n);
-    fxs_.assign(n, 0.0), fys_.assign(n, 0.0), fzs_.assign(n, 0.0);
-    types_.resize(n);
     const std::uint32_t* order = cells_.order().data();
-    // Serial: a few microseconds of copying, where a parallel region would add a sync point to every step.
+#pragma omp for schedule(static)
     for (std::size_t k = 0; k < n; ++k) {
       const std::uint32_t i = order[k];
       xs_[k] = s.x[i], ys_[k] = s.y[i], zs_[k] = s.z[i];
       vxs_[k] = v.vx[i], vys_[k] = v.vy[i], vzs_[k] = v.vz[i];
+      fxs_[k] = 0, fys_[k] = 0, fzs_[k] = 0;
       types_[k] = s.type[i];
+    }
+  }
+
+  // Sorted forces back to the System's order, shared by the team of the colours when called inside their
+  // region; the order is a permutation, so each bead is written once.
+  void scatter(System& s) const {
+    const std::size_t n = s.size();
+    const std::uint32_t* order = cells_.order().data();
+#pragma omp for schedule(static)
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::uint32_t i = order[k];
+      s.fx[i] = fxs_[k], s.fy[i] = fys_[k], s.fz[i] = fzs_[k];
     }
   }
 
@@ -322,9 +340,13 @@ class PairLoop final : public PairForces {
 
   ForceSums compute_cells(const Ctx& cx) {
     System& s = cx.s;
-    const std::size_t n = s.size();
-    cells_.build(s, k_.rc);
-    gather(s, cx.v);
+    resize_sorted(s.size());
+    // One team sorts and copies: a fork less than a region each, and a step has few to spare.
+#pragma omp parallel num_threads(threads_) if (s.size() >= SortedCells::kParallelBeads)
+    {
+      cells_.build(s, k_.rc);
+      gather(s, cx.v);
+    }
     const int nc = cells_.cells();
     cell_sums_.resize(std::size_t(nc));
     const bool tap = cx.tap != nullptr;
@@ -338,8 +360,8 @@ class PairLoop final : public PairForces {
       noise_.begin_step(slot_base_[nc]);
     }
     if (tap) cell_tap_.resize(std::size_t(nc));
-    // Two barriers a step; a box with few layers per colour runs on one thread (the result does not depend
-    // on the team size, so this choice is free).
+    // Three barriers a step (the colours, then the scatter); a box with few layers per colour runs on one
+    // thread (the result does not depend on the team size, so this choice is free).
     const int colours = cells_.colours(), layers = cells_.layers(), per_layer = cells_.layer_cells();
     const int team = layers / colours >= 2 * threads_ ? threads_ : 1;
 #pragma omp parallel num_threads(team)
@@ -350,9 +372,8 @@ class PairLoop final : public PairForces {
         for (int z = k; z < layers; z += colours)
           for (int c = z * per_layer; c < (z + 1) * per_layer; ++c) do_cell(cx, c, sc, tap);
       }
+      scatter(s);
     }
-    const std::uint32_t* order = cells_.order().data();
-    for (std::size_t k = 0; k < n; ++k) s.fx[order[k]] = fxs_[k], s.fy[order[k]] = fys_[k], s.fz[order[k]] = fzs_[k];
     ForceSums sums;
     sums.min_r2 = k_.rc2();
     for (const CellSums& cs : cell_sums_) {

@@ -47,7 +47,7 @@ struct Timings {
   double total_s = 0, force_s = 0, per_step_s = 0;
   double particle_steps_per_s = 0;
   // The production steps alone (after equilibration): the steady-state cost, without the start-up transient
-  // of a random initial configuration (hot overlaps, Verlet lists rebuilt every step).
+  // of a random initial configuration (hot overlaps, unstable first steps).
   double production_s = 0, production_particle_steps_per_s = 0;
   std::uint64_t random_numbers = 0;  // generator calls (all mode: every pair every step)
   std::uint64_t zetas = 0;           // distribution transforms (pairs inside r_c)

@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "dpdrng/rng/unit_math.hpp"
+#include "dpdrng/rng/unit_math_f32.hpp"
 
 namespace dpdrng::rng {
 
@@ -23,32 +24,39 @@ inline double uniform_unit_variance(const std::array<std::uint64_t, N>& b) {
   return std::numbers::sqrt3 * (2.0 * to_unit(b[0]) - 1.0);
 }
 
-// Box–Muller, cosine branch. The two uniforms: a block of two 64-bit words gives one each at 53-bit resolution
-// (64TEA's a and b, Philox's halves); a single 64-bit word (32TEA, SplitMix64, Saru) gives its two 32-bit halves,
-// which for 32TEA are the two TEA output words x0' and x1'.
-// Split in two so that the batched path (fill_noise) can run the same parts in vectorised loops: radius² =
-// −2·log u1 and cos(2π·u2) through math::log_unit and math::cos_2pi, then the correctly rounded sqrt (std::sqrt
-// here, the SIMD instruction there), so that a block gives the same ζ, bit for bit, on either path.
+// Box–Muller, cosine branch: z = √(−2·log u1)·cos(2π·u2). Which uniforms feed it:
+//  - a block of one 64-bit word (32TEA, SplitMix64, Saru, MT19937): its two 32-bit halves, u1 = (low + 1)·2^-32
+//    and u2 = high·2^-32 (for 32TEA the two TEA output words x0' and x1'), computed in single precision from the
+//    integers (unit_math_f32.hpp): 32-bit uniforms need no more, and the batched path runs twice the lanes;
+//  - a block of two or more words (64TEA's a and b, Philox's, Threefry's): one 53-bit uniform from each of the
+//    first two words, u1 in (0, 1] and u2 in [0, 1), in double precision (unit_math.hpp).
+// Split in parts so that the batched path (fill_noise) can run the same functions in vectorised loops, then the
+// correctly rounded sqrt (std::sqrt here, the SIMD instruction there): a block gives the same ζ, bit for bit,
+// on either path. The single-precision z is √(radius²) and cos as floats, multiplied in double (exactly).
 struct BoxMullerParts {
   double radius2, cosine;
 };
+struct BoxMullerParts32 {
+  float radius2, cosine;
+};
+inline BoxMullerParts32 box_muller_parts32(std::uint64_t w) {
+  return {-2.0f * math::log_u32(static_cast<std::uint32_t>(w)), math::cos_2pi_u32(static_cast<std::uint32_t>(w >> 32))};
+}
 template <std::size_t N>
 inline BoxMullerParts box_muller_parts(const std::array<std::uint64_t, N>& b) {
-  double u1, u2;
-  if constexpr (N >= 2) {
-    u1 = to_unit_open0(b[0]);
-    u2 = to_unit(b[1]);
-  } else {
-    u1 = (static_cast<double>(b[0] & 0xffffffffu) + 1.0) * 0x1p-32;
-    u2 = static_cast<double>(b[0] >> 32) * 0x1p-32;
-  }
-  return {-2.0 * math::log_unit(u1), math::cos_2pi(u2)};
+  static_assert(N >= 2, "a one-word block goes through box_muller_parts32");
+  return {-2.0 * math::log_unit(to_unit_open0(b[0])), math::cos_2pi(to_unit(b[1]))};
 }
 
 template <std::size_t N>
 inline double box_muller(const std::array<std::uint64_t, N>& b) {
-  const BoxMullerParts p = box_muller_parts(b);
-  return std::sqrt(p.radius2) * p.cosine;
+  if constexpr (N == 1) {
+    const BoxMullerParts32 p = box_muller_parts32(b[0]);
+    return static_cast<double>(std::sqrt(p.radius2)) * static_cast<double>(p.cosine);
+  } else {
+    const BoxMullerParts p = box_muller_parts(b);
+    return std::sqrt(p.radius2) * p.cosine;
+  }
 }
 
 template <Distribution D, std::size_t N>

@@ -19,6 +19,7 @@ using u32x16 = std::uint32_t __attribute__((vector_size(64)));
 using u64x8 = std::uint64_t __attribute__((vector_size(64)));
 using i64x8 = std::int64_t __attribute__((vector_size(64)));
 using f64x8 = double __attribute__((vector_size(64)));
+using f32x16 = float __attribute__((vector_size(64)));
 
 template <class V, class T>
 inline V load(const T* p) {
@@ -49,6 +50,16 @@ inline f64x8 sqrt(f64x8 x) {
   return x;
 #else
   for (int i = 0; i < 8; ++i) x[i] = std::sqrt(x[i]);
+  return x;
+#endif
+}
+
+inline f32x16 sqrt(f32x16 x) {
+#if defined(__AVX512F__)
+  const auto v = reinterpret_cast<__m512>(x);
+  return reinterpret_cast<f32x16>(_mm512_mask_sqrt_ps(v, static_cast<__mmask16>(0xffff), v));
+#else
+  for (int i = 0; i < 16; ++i) x[i] = std::sqrt(x[i]);
   return x;
 #endif
 }

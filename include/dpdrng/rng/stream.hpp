@@ -17,8 +17,8 @@ void fill_unit(const GeneratorSpec& spec, std::uint64_t start, std::uint64_t off
 
 // One number per generator call, the value PairNoise would give for that call's block:
 // out[k] = draw<dist>(stream(start, first_call + k)); mt19937's "call" is one next64() word.
-// uniform: bit-identical to the scalar draw. gauss: Box–Muller through simd::log_unit and simd::cos_2pi,
-// within a few ulp of the scalar box_muller() (which keeps libm's log and cos; tests state the bound).
+// Bit-identical to the scalar draw for both distributions: the Gaussian runs box_muller()'s own functions in
+// vectorised loops (distribution.hpp).
 void fill_noise(const GeneratorSpec& spec, Distribution dist, std::uint64_t start, std::uint64_t first_call,
                 std::span<double> out);
 inline void fill_uniform(const GeneratorSpec& spec, std::uint64_t start, std::uint64_t first_call,
