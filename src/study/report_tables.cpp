@@ -36,6 +36,13 @@ std::vector<std::string> streams_of(const VariantReport& v) {
   return s;
 }
 
+// A run's speed against the 8-round run of its generator, in words that never say "0.6× faster".
+std::string speed_vs_8(double at8_ms, double step_ms) {
+  if (!std::isfinite(at8_ms) || !(step_ms > 0)) return "–";
+  const double r = at8_ms / step_ms;
+  return r >= 1 ? fmt("%.2f× faster", r) : fmt("%.2f× slower", 1 / r);
+}
+
 std::string csv_quote(const std::string& s) {
   if (s.find_first_of(",\"\n") == std::string::npos) return s;
   std::string q = "\"";
@@ -172,7 +179,7 @@ std::string cost_markdown(const Analysis& a) {
         at8 = w.step_ms;
     o << "| " << v.key.label() << " | " << v.key.distribution << " | " << fmt("%.2f", v.ns_per_number) << " | "
       << fmt("%.3f", v.step_ms) << " | " << fmt("%.0f %%", 100 * v.rng_share) << " | "
-      << (std::isfinite(at8) ? fmt("%.2f×", at8 / v.step_ms) + " faster" : "–") << " |\n";
+      << speed_vs_8(at8, v.step_ms) << " |\n";
   }
   return o.str();
 }
