@@ -75,8 +75,9 @@ BilayerResult run_bilayer(const BilayerConfig& in, const RunHooks& hooks) {
   // second phase is seeded differently so that it does not replay the warm-up's numbers.
   const bool is_mt = cfg.generator.name == "mt19937";
   auto pair_warm = make_pair_forces(pair_config(cfg, cfg.seed), bilayer_kernel(cfg, cfg.dt_warmup), n);
-  auto pair_main = make_pair_forces(pair_config(cfg, is_mt ? cfg.seed ^ 0xD1B54A32D192ED03ull : cfg.seed),
-                                    bilayer_kernel(cfg, cfg.dt), n);
+  const WaterConfig main_config = pair_config(cfg, is_mt ? cfg.seed ^ 0xD1B54A32D192ED03ull : cfg.seed);
+  const DpdKernel main_kernel = bilayer_kernel(cfg, cfg.dt);
+  auto pair_main = make_pair_forces(main_config, main_kernel, n);
   ModifiedVelocityVerlet vv_warm(cfg.dt_warmup, cfg.lambda, cfg.threads), vv_main(cfg.dt, cfg.lambda, cfg.threads);
 
   BilayerResult r;
@@ -218,8 +219,8 @@ BilayerResult run_bilayer(const BilayerConfig& in, const RunHooks& hooks) {
   // As the water scene does: by difference against ζ = 0 on the final state (3 % of the run's time at most),
   // scaled by the pair forces' share of the run (the bonded forces and observables are the rest).
   if (r.steps_done > 0 && total > 0)
-    t.rng_share_estimate = rng_share_by_difference(*pair_main, pair_config(cfg, cfg.seed), bilayer_kernel(cfg, cfg.dt),
-                                                   s, std::uint64_t(cfg.steps) + 1, 0.03 * total) *
+    t.rng_share_estimate = rng_share_by_difference(*pair_main, main_config, main_kernel, s,
+                                                   std::uint64_t(cfg.steps) + 1, 0.03 * total) *
                            std::min(1.0, force_s / total);
   t.list_builds = pair_warm->list_builds() + pair_main->list_builds();
   t.threads = cfg.threads;
