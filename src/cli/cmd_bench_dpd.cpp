@@ -9,6 +9,7 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include "dpdrng/cli/registry.hpp"
@@ -27,7 +28,7 @@ struct BenchDpdArgs {
   int particles_cells = 24000;
   int threads = 1;
   int repeat = 3;
-  bool paper = false, json = false, scaling = true;
+  bool paper = false, json = false, scaling = true, scaling_only = false;
 };
 
 struct Case {
@@ -69,26 +70,67 @@ dpd::WaterConfig scene(const BenchDpdArgs& a, dpd::PairMode mode, std::int64_t s
   return c;
 }
 
-Measured measure(const Case& k, int repeat) {
-  std::vector<double> t;
-  double share = 0;
-  for (int r = 0; r < repeat; ++r) {
-    const dpd::RunResult res = dpd::run_water(k.cfg);
-    if (!res.ok()) throw std::runtime_error(k.label + ": " + res.status);
-    t.push_back(res.timings.production_s);
-    share = res.timings.rng_share_estimate;
-  }
-  std::sort(t.begin(), t.end());
+void progress(const std::string& what) {
+  if (isatty(STDERR_FILENO)) std::cerr << "\r\033[K" << what << std::flush;
+}
+
+dpd::Timings run_once(const Case& k) {
+  const dpd::RunResult res = dpd::run_water(k.cfg);
+  if (!res.ok()) throw std::runtime_error(k.label + ": " + res.status);
+  return res.timings;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+Measured summarise(const Case& k, const std::vector<double>& t, double share) {
   Measured m;
   m.label = k.label;
   m.pairs = std::string(dpd::to_string(k.cfg.pairs));
   m.particles = static_cast<std::size_t>(k.cfg.particles);
   m.steps = k.cfg.steps - k.cfg.equilibrate;
   m.threads = k.cfg.threads;
-  m.median_s = t[t.size() / 2];
+  m.median_s = median(t);
   m.particle_steps_per_s = double(m.particles) * m.steps / m.median_s;
   m.share_estimate = share;
   return m;
+}
+
+Measured measure(const Case& k, int repeat) {
+  std::vector<double> t;
+  double share = 0;
+  for (int r = 0; r < repeat; ++r) {
+    const dpd::Timings tm = run_once(k);
+    t.push_back(tm.production_s);
+    share = tm.rng_share_estimate;
+  }
+  return summarise(k, t, share);
+}
+
+// One and two threads run alternately, and the speed-up is the median of the pairs' ratios: on a shared
+// machine a burst of other load then spoils one pair, not the whole of one side.
+struct Scaling {
+  Measured one, two;
+  double speedup = 0;
+  std::vector<double> ratios;
+};
+
+Scaling measure_scaling(Case k, int repeat) {
+  Case k2 = k;
+  k.cfg.threads = 1, k2.cfg.threads = 2;
+  std::vector<double> t1, t2;
+  Scaling out;
+  for (int r = 0; r < repeat; ++r) {
+    progress("bench dpd: cells scaling, pair " + std::to_string(r + 1) + " of " + std::to_string(repeat));
+    t1.push_back(run_once(k).production_s);
+    t2.push_back(run_once(k2).production_s);
+    out.ratios.push_back(t1.back() / t2.back());
+  }
+  out.one = summarise(k, t1, 0), out.two = summarise(k2, t2, 0);
+  out.speedup = median(out.ratios);
+  return out;
 }
 
 Case with_generator(dpd::WaterConfig c, const std::string& name, int rounds) {
@@ -101,9 +143,6 @@ Case baseline(dpd::WaterConfig c, dpd::NoiseOverride o) {
   return {o == dpd::NoiseOverride::none ? "none (zeta = 0)" : "unhashed", c};
 }
 
-void progress(const std::string& what) {
-  if (isatty(STDERR_FILENO)) std::cerr << "\r\033[K" << what << std::flush;
-}
 
 nlohmann::json to_json(const Measured& m) {
   return {{"case", m.label}, {"pairs", m.pairs}, {"particles", m.particles}, {"steps", m.steps},
@@ -111,20 +150,11 @@ nlohmann::json to_json(const Measured& m) {
           {"rng_share_estimate", m.share_estimate}};
 }
 
-void run_bench_dpd(const BenchDpdArgs& a) {
-  if (a.repeat < 1) throw InputError("--repeat must be at least 1");
-  if (a.threads < 1) throw InputError("--threads must be at least 1");
-  if (a.steps_all < 1 || a.steps_cells < 1) throw InputError("--steps-all and --steps-cells must be at least 1");
+std::vector<Measured> measure_table(const BenchDpdArgs& a) {
   const auto rounds = parse_int_list(a.rounds, "--rounds");
-  std::vector<dpd::PairMode> modes;
-  for (const auto& p : split(a.pairs)) modes.push_back(dpd::parse_pair_mode(p));
-  for (const auto& g : split(a.generators)) rng::find_generator(g);  // InputError for unknown names
-
-  nlohmann::json out;
-  out["context"] = {{"version", DPDRNG_VERSION}, {"threads", a.threads}, {"repeat", a.repeat},
-                    {"distribution", a.distribution}, {"statistic", "median wall time of the production steps (after a short untimed start)"}};
   std::vector<Measured> table;
-  for (dpd::PairMode mode : modes) {
+  for (const auto& p : split(a.pairs)) {
+    const dpd::PairMode mode = dpd::parse_pair_mode(p);
     const dpd::WaterConfig base = scene(a, mode, mode == dpd::PairMode::all ? a.steps_all : a.steps_cells);
     std::vector<Case> cases{baseline(base, dpd::NoiseOverride::none), baseline(base, dpd::NoiseOverride::unhashed)};
     for (const auto& g : split(a.generators)) {
@@ -141,48 +171,32 @@ void run_bench_dpd(const BenchDpdArgs& a) {
       table.push_back(measure(k, a.repeat));
     }
   }
+  return table;
+}
 
-  // The paper's setting: 256 beads, all pairs, tea32(8) vs tea32(1) vs no noise.
-  const std::int64_t paper_steps = a.paper ? 10000 : a.steps_all;
-  dpd::WaterConfig pc = scene(a, dpd::PairMode::all, paper_steps);
+// The paper's setting: 256 beads, all pairs, tea32(8) vs tea32(1) vs no noise.
+struct Paper {
+  std::int64_t steps = 0;
+  Measured t8, t1, t0;
+  double share8() const { return (t8.median_s - t0.median_s) / t8.median_s; }
+  double share1() const { return (t1.median_s - t0.median_s) / t1.median_s; }
+  double speedup() const { return t8.median_s / t1.median_s; }
+  double full_run_s() const { return t1.median_s * 10000.0 / steps; }
+};
+
+Paper measure_paper(const BenchDpdArgs& a) {
+  Paper p;
+  p.steps = a.paper ? 10000 : a.steps_all;
+  dpd::WaterConfig pc = scene(a, dpd::PairMode::all, p.steps);
   pc.distribution = rng::Distribution::gauss;
   progress("bench dpd: paper setting");
-  const Measured t8 = measure(with_generator(pc, "tea32", 8), a.repeat);
-  const Measured t1 = measure(with_generator(pc, "tea32", 1), a.repeat);
-  const Measured t0 = measure(baseline(pc, dpd::NoiseOverride::none), a.repeat);
-  const double share8 = (t8.median_s - t0.median_s) / t8.median_s;
-  const double share1 = (t1.median_s - t0.median_s) / t1.median_s;
-  const double speedup = t8.median_s / t1.median_s;
-  const double full_run_s = t1.median_s * 10000.0 / paper_steps;
+  p.t8 = measure(with_generator(pc, "tea32", 8), a.repeat);
+  p.t1 = measure(with_generator(pc, "tea32", 1), a.repeat);
+  p.t0 = measure(baseline(pc, dpd::NoiseOverride::none), a.repeat);
+  return p;
+}
 
-  std::vector<Measured> scaling;
-  if (a.scaling) {
-    dpd::WaterConfig sc = scene(a, dpd::PairMode::cells, a.steps_cells);
-    for (int th : {1, 2}) {
-      sc.threads = th;
-      progress("bench dpd: cells scaling, " + std::to_string(th) + " thread(s)");
-      scaling.push_back(measure(with_generator(sc, "tea32", 1), a.repeat));
-    }
-  }
-  progress("");
-
-  if (a.json) {
-    for (const auto& m : table) out["throughput"].push_back(to_json(m));
-    out["paper"] = {{"steps", paper_steps},
-                    {"tea32_8_s", t8.median_s},
-                    {"tea32_1_s", t1.median_s},
-                    {"none_s", t0.median_s},
-                    {"rng_share_tea32_8", share8},
-                    {"rng_share_tea32_1", share1},
-                    {"speedup_8_to_1", speedup},
-                    {"tea32_1_10000_steps_s", full_run_s},
-                    {"paper_reference", {{"rng_share_8_rounds", 0.40}, {"speedup_8_to_1", 1.5}}}};
-    for (const auto& m : scaling) out["scaling"].push_back(to_json(m));
-    if (scaling.size() == 2)
-      out["scaling_speedup_2_threads"] = scaling[0].median_s / scaling[1].median_s;
-    std::cout << out.dump(2) << "\n";
-    return;
-  }
+void print_table(const BenchDpdArgs& a, const std::vector<Measured>& table) {
   std::cout << "particle-steps/s (median of " << a.repeat << ", " << a.threads << " thread(s), " << a.distribution
             << ")\nRNG share by difference: 'vs none' against the table's zeta = 0 run, 'in-run' against zeta = 0\n"
             << "force evaluations alternated with the run's own on its final state (timings.rng_share_estimate)\n";
@@ -197,17 +211,68 @@ void run_bench_dpd(const BenchDpdArgs& a) {
               << std::fixed << std::setprecision(1) << 100 * (m.median_s - none_s) / m.median_s << "%"
               << std::setw(11) << 100 * m.share_estimate << "%" << std::defaultfloat << "\n";
   }
+}
+
+void print_paper(const BenchDpdArgs& a, const Paper& p) {
   std::cout << std::setprecision(3);
-  std::cout << "\npaper setting (256 beads, all pairs, gauss, " << paper_steps << " steps):\n"
-            << "  tea32(8) " << t8.median_s << " s, tea32(1) " << t1.median_s << " s, zeta = 0 " << t0.median_s
-            << " s\n"
-            << "  RNG share at 8 rounds " << 100 * share8 << " % (paper: 40 %), at 1 round " << 100 * share1 << " %\n"
-            << "  whole-run speed-up 8 -> 1 rounds " << speedup << "x (paper: 1.5x)\n"
-            << "  10 000 steps with tea32(1): " << full_run_s << " s" << (a.paper ? "" : " (extrapolated)") << "\n";
-  if (scaling.size() == 2)
-    std::cout << "\ncells, " << scaling[0].particles << " beads, tea32(1): 1 thread "
-              << scaling[0].particle_steps_per_s << " p-steps/s, 2 threads " << scaling[1].particle_steps_per_s
-              << " p-steps/s, speed-up " << scaling[0].median_s / scaling[1].median_s << "x\n";
+  std::cout << "\npaper setting (256 beads, all pairs, gauss, " << p.steps << " steps):\n"
+            << "  tea32(8) " << p.t8.median_s << " s, tea32(1) " << p.t1.median_s << " s, zeta = 0 "
+            << p.t0.median_s << " s\n"
+            << "  RNG share at 8 rounds " << 100 * p.share8() << " % (paper: 40 %), at 1 round " << 100 * p.share1()
+            << " %\n"
+            << "  whole-run speed-up 8 -> 1 rounds " << p.speedup() << "x (paper: 1.5x)\n"
+            << "  10 000 steps with tea32(1): " << p.full_run_s() << " s" << (a.paper ? "" : " (extrapolated)") << "\n";
+}
+
+void print_scaling(const Scaling& sc) {
+  std::cout << std::setprecision(3) << "\ncells, " << sc.one.particles << " beads, tea32(1), one and two threads "
+            << "alternately, " << sc.ratios.size() << " pairs: 1 thread " << sc.one.particle_steps_per_s
+            << " p-steps/s, 2 threads " << sc.two.particle_steps_per_s << " p-steps/s (medians), speed-up "
+            << sc.speedup << "x (median of the pairs' ratios; range " << *std::min_element(sc.ratios.begin(), sc.ratios.end())
+            << "-" << *std::max_element(sc.ratios.begin(), sc.ratios.end()) << ")\n";
+}
+
+void run_bench_dpd(const BenchDpdArgs& a) {
+  if (a.repeat < 1) throw InputError("--repeat must be at least 1");
+  if (a.threads < 1) throw InputError("--threads must be at least 1");
+  if (a.steps_all < 1 || a.steps_cells < 1) throw InputError("--steps-all and --steps-cells must be at least 1");
+  if (a.scaling_only && !a.scaling) throw InputError("--scaling-only and --no-scaling exclude each other");
+  parse_int_list(a.rounds, "--rounds");
+  for (const auto& p : split(a.pairs)) dpd::parse_pair_mode(p);
+  for (const auto& g : split(a.generators)) rng::find_generator(g);  // InputError for unknown names
+
+  nlohmann::json out;
+  out["context"] = {{"version", DPDRNG_VERSION}, {"threads", a.threads}, {"repeat", a.repeat},
+                    {"distribution", a.distribution}, {"statistic", "median wall time of the production steps (after a short untimed start)"}};
+  const std::vector<Measured> table = a.scaling_only ? std::vector<Measured>{} : measure_table(a);
+  const Paper paper = a.scaling_only ? Paper{} : measure_paper(a);
+  std::optional<Scaling> scaling;
+  if (a.scaling)
+    scaling = measure_scaling(with_generator(scene(a, dpd::PairMode::cells, a.steps_cells), "tea32", 1), a.repeat);
+  progress("");
+
+  if (a.json) {
+    for (const auto& m : table) out["throughput"].push_back(to_json(m));
+    if (!a.scaling_only)
+      out["paper"] = {{"steps", paper.steps},
+                      {"tea32_8_s", paper.t8.median_s},
+                      {"tea32_1_s", paper.t1.median_s},
+                      {"none_s", paper.t0.median_s},
+                      {"rng_share_tea32_8", paper.share8()},
+                      {"rng_share_tea32_1", paper.share1()},
+                      {"speedup_8_to_1", paper.speedup()},
+                      {"tea32_1_10000_steps_s", paper.full_run_s()},
+                      {"paper_reference", {{"rng_share_8_rounds", 0.40}, {"speedup_8_to_1", 1.5}}}};
+    if (scaling) {
+      out["scaling"] = {to_json(scaling->one), to_json(scaling->two)};
+      out["scaling_speedup_2_threads"] = scaling->speedup;
+      out["scaling_pair_ratios"] = scaling->ratios;
+    }
+    std::cout << out.dump(2) << "\n";
+    return;
+  }
+  if (!a.scaling_only) print_table(a, table), print_paper(a, paper);
+  if (scaling) print_scaling(*scaling);
 }
 
 const bool registered = register_command(62, [](CLI::App& root) {
@@ -222,9 +287,11 @@ const bool registered = register_command(62, [](CLI::App& root) {
   sub->add_option("--steps-cells", a->steps_cells, "steps of the cells-mode runs")->capture_default_str();
   sub->add_option("--particles-cells", a->particles_cells, "beads of the cells-mode system")->capture_default_str();
   sub->add_option("--threads", a->threads, "OpenMP threads for the table")->capture_default_str();
-  sub->add_option("--repeat", a->repeat, "runs per case (the median is reported)")->capture_default_str();
+  sub->add_option("--repeat", a->repeat, "runs per case (the median is reported); for the scaling, pairs of runs")->capture_default_str();
   sub->add_flag("--paper", a->paper, "time the paper's full 10 000-step run for tea32(8)/tea32(1)");
   sub->add_flag("!--no-scaling", a->scaling, "skip the 1- vs 2-thread cells comparison");
+  sub->add_flag("--scaling-only", a->scaling_only,
+                "only the 1- vs 2-thread cells comparison: --repeat pairs of runs, one and two threads alternately");
   sub->add_flag("--json", a->json, "machine-readable output");
   sub->callback([a] { run_bench_dpd(*a); });
 });

@@ -29,8 +29,10 @@ inline void wrap1(double& x, std::int32_t& img, double L) {
 }
 }  // namespace
 
-void System::wrap() {
-  for (std::size_t i = 0; i < size(); ++i) {
+void System::wrap() { wrap(0, size()); }
+
+void System::wrap(std::size_t lo, std::size_t hi) {
+  for (std::size_t i = lo; i < hi; ++i) {
     wrap1(x[i], ix[i], box.L[0]);
     wrap1(y[i], iy[i], box.L[1]);
     wrap1(z[i], iz[i], box.L[2]);

@@ -93,7 +93,7 @@ RunResult run_water(const WaterConfig& in, const RunHooks& hooks) {
   msd_every = static_cast<int>(std::max<std::int64_t>(msd_every, (production + max_frames - 1) / max_frames));
   VelocityHistogram vpdf(cfg.vpdf_bins, cfg.vpdf_range * std::sqrt(cfg.kT));
   MsdRecorder msd(n, msd_every * cfg.dt, max_frames);
-  RdfHistogram rdf(cfg.rdf_bins, std::min(cfg.rdf_rmax, L / 2));
+  RdfHistogram rdf(cfg.rdf_bins, std::min(cfg.rdf_rmax, L / 2), cfg.threads);
   Samples smp;
 
   const double V = s.box.volume();

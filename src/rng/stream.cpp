@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 
 #include "dpdrng/rng/batch.hpp"
 #include "dpdrng/rng/simd.hpp"
@@ -39,30 +40,49 @@ std::array<std::uint64_t, W> block_at(const std::uint64_t* words, std::size_t ca
   return b;
 }
 
-// Plain loops over the scalar draw's own functions, which GCC vectorises at -O3, so every number equals the
-// scalar draw<> bit for bit. A loop calling std::sqrt does not vectorise (libm's sqrt may set errno), so the
-// Gaussian goes a register at a time: a vectorised loop for −2·log u1 and cos(2π·u2), then the SIMD sqrt
-// (correctly rounded, like std::sqrt). Blocks of one register, not two passes over the chunk, let the
-// out-of-order core run one block's sqrt on the divider while the next block's polynomials use the FMA units.
+// The scalar draw's own functions, so every number equals the scalar draw<> bit for bit: plain loops that GCC
+// vectorises at -O3 where it can. A loop calling std::sqrt does not vectorise (libm's sqrt may set errno), so
+// the Gaussian goes a register at a time, with the SIMD sqrt (correctly rounded, like std::sqrt). Blocks of one
+// register, not two passes over the chunk, let the out-of-order core run one block's sqrt on the divider while
+// the next block's polynomials use the FMA units.
+
+// The low (u1) or high (u2) halves of 16 words.
+simd::u32x16 word_halves(const std::uint64_t* w, bool high) {
+  if constexpr (std::endian::native == std::endian::little) {
+    const auto a = simd::load<simd::u32x16>(w), b = simd::load<simd::u32x16>(w + 8);
+    return high ? __builtin_shufflevector(a, b, 1, 3, 5, 7, 9, 11, 13, 15, 17, 19, 21, 23, 25, 27, 29, 31)
+                : __builtin_shufflevector(a, b, 0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
+  } else {
+    simd::u32x16 h;
+    for (int j = 0; j < 16; ++j) h[j] = static_cast<std::uint32_t>(high ? w[j] >> 32 : w[j]);
+    return h;
+  }
+}
+
+// Lanes 0–7 or 8–15 widened to double (exact). GCC 12 splits the generic conversion into 128-bit pieces.
+simd::f64x8 widen(simd::f32x16 v, bool high) {
+  using f32x8 = float __attribute__((vector_size(32)));
+  const f32x8 half = high ? __builtin_shufflevector(v, v, 8, 9, 10, 11, 12, 13, 14, 15)
+                          : __builtin_shufflevector(v, v, 0, 1, 2, 3, 4, 5, 6, 7);
+#if defined(__AVX512F__)
+  // The masked form with every lane selected: the unmasked one trips GCC 12's -Wmaybe-uninitialized.
+  const __m256 x = reinterpret_cast<__m256>(half);
+  return reinterpret_cast<simd::f64x8>(_mm512_maskz_cvtps_pd(static_cast<__mmask8>(0xff), x));
+#else
+  return __builtin_convertvector(half, simd::f64x8);
+#endif
+}
+
+// One-word blocks: not a vectorised loop but GNU vectors, because the single-precision log reads a 16-entry table
+// that the auto-vectoriser would turn into scalar loads and a register permutes in one instruction
+// (unit_math_f32.hpp); its kernels are templates that the scalar draw runs on one lane, so the bits agree.
 void gauss_words32(const std::uint64_t* w, std::size_t n, double* o) {
   std::size_t c = 0;
   for (; c + 16 <= n; c += 16) {
-    alignas(64) float radius2[16], cosine[16];
-    for (std::size_t j = 0; j < 16; ++j) {
-      const BoxMullerParts32 p = box_muller_parts32(w[c + j]);
-      radius2[j] = p.radius2;
-      cosine[j] = p.cosine;
-    }
-    const simd::f32x16 root = simd::sqrt(simd::load<simd::f32x16>(radius2));
-    const simd::f32x16 cos = simd::load<simd::f32x16>(cosine);
-    const auto lo = [](const simd::f32x16& v) {
-      return __builtin_convertvector(__builtin_shufflevector(v, v, 0, 1, 2, 3, 4, 5, 6, 7), simd::f64x8);
-    };
-    const auto hi = [](const simd::f32x16& v) {
-      return __builtin_convertvector(__builtin_shufflevector(v, v, 8, 9, 10, 11, 12, 13, 14, 15), simd::f64x8);
-    };
-    simd::store(o + c, lo(root) * lo(cos));
-    simd::store(o + c + 8, hi(root) * hi(cos));
+    const BoxMullerParts32x16 p = box_muller_parts32(word_halves(w + c, false), word_halves(w + c, true));
+    const simd::f32x16 root = simd::sqrt(p.radius2);
+    simd::store(o + c, widen(root, false) * widen(p.cosine, false));
+    simd::store(o + c + 8, widen(root, true) * widen(p.cosine, true));
   }
   for (; c < n; ++c) o[c] = box_muller(std::array<std::uint64_t, 1>{w[c]});
 }

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -228,6 +229,28 @@ TEST(UnitMath, Cos2PiU32WithinTwoAndAHalfFloatUlpOfMpfr) {
   std::printf("cos_2pi_u32: max %.3f float ulp (at x = %u)\n", worst, worst_at);
   EXPECT_EQ(math::cos_2pi_u32(0), 1.0f);
   EXPECT_EQ(math::cos_2pi_u32(0x80000000u), -1.0f);
+}
+
+// The batched Gaussian runs the single-precision kernels on 16 lanes (GNU vectors, register-table lookups) and the
+// pair loop on one: the same template, so the same bits, checked lane for lane over every word class above.
+// minus_two_log_u32, which Box–Muller uses, folds the −2 into the constants: the bits of −2.0f * log_u32.
+TEST(UnitMath, U32KernelsSixteenLanesEqualOneLaneBitwise) {
+  const auto x = word_inputs();
+  auto bits = [](float f) { return std::bit_cast<std::uint32_t>(f); };
+  for (std::size_t k = 0; k + 16 <= x.size(); k += 16) {
+    const auto v = simd::load<simd::u32x16>(x.data() + k);
+    const simd::f32x16 log16 = math::log_u32(v), m2log16 = math::minus_two_log_u32(v), cos16 = math::cos_2pi_u32(v);
+    for (int j = 0; j < 16; ++j) {
+      const std::uint32_t w = x[k + j];
+      ASSERT_EQ(bits(log16[j]), bits(math::log_u32(w))) << w;
+      ASSERT_EQ(bits(m2log16[j]), bits(math::minus_two_log_u32(w))) << w;
+      ASSERT_EQ(bits(cos16[j]), bits(math::cos_2pi_u32(w))) << w;
+      if (w != 0xffffffffu) {
+        ASSERT_EQ(bits(math::minus_two_log_u32(w)), bits(-2.0f * math::log_u32(w))) << w;
+      }
+    }
+  }
+  EXPECT_EQ(bits(math::minus_two_log_u32(0xffffffffu)), 0u);  // +0: log 1 = +0 and −2·(+0) would be −0
 }
 
 // The batched Gaussian's sqrt: the SIMD instruction must equal std::sqrt lane for lane (both correctly rounded).

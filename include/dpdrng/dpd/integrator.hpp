@@ -25,6 +25,9 @@ class ModifiedVelocityVerlet {
   ForceSums step(System& s, const ForceFn& force);
 
  private:
+  void drift(std::size_t lo, std::size_t hi, double* __restrict x, double* __restrict v, const double* __restrict f,
+             double* __restrict predicted) const;
+  void kick(std::size_t lo, std::size_t hi, double* __restrict v, const double* __restrict f) const;
   double dt_, lambda_;
   int threads_;
   std::vector<double> vtx_, vty_, vtz_;

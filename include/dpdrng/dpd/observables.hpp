@@ -41,13 +41,16 @@ class MsdRecorder {
 
 class RdfHistogram {
  public:
-  RdfHistogram(int bins, double rmax) : bins_(bins), rmax_(rmax), counts_(bins, 0) {}
+  // Counts are integers, so a team of `threads` gives the same histogram as one thread.
+  RdfHistogram(int bins, double rmax, int threads = 1)
+      : bins_(bins), rmax_(rmax), threads_(threads), counts_(bins, 0) {}
   void sample(const System& s);
   Rdf finish(const System& s) const;
 
  private:
   int bins_;
   double rmax_;
+  int threads_;
   std::vector<std::uint64_t> counts_;
   std::size_t samples_ = 0;
 };

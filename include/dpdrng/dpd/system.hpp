@@ -31,8 +31,10 @@ struct System {
 
   std::size_t size() const { return x.size(); }
   void resize(std::size_t n);
-  // Wraps every position into [0, L) and counts the images crossed.
+  // Wraps every position (or beads [lo, hi): each independent of the others) into [0, L) and counts the
+  // images crossed.
   void wrap();
+  void wrap(std::size_t lo, std::size_t hi);
   std::array<double, 3> momentum() const;
   double kinetic_twice() const;  // Σ m v² (fixed summation order)
 };
