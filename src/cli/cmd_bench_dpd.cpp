@@ -143,7 +143,6 @@ Case baseline(dpd::WaterConfig c, dpd::NoiseOverride o) {
   return {o == dpd::NoiseOverride::none ? "none (zeta = 0)" : "unhashed", c};
 }
 
-
 nlohmann::json to_json(const Measured& m) {
   return {{"case", m.label}, {"pairs", m.pairs}, {"particles", m.particles}, {"steps", m.steps},
           {"threads", m.threads}, {"median_s", m.median_s}, {"particle_steps_per_s", m.particle_steps_per_s},

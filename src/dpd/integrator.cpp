@@ -36,14 +36,14 @@ ForceSums ModifiedVelocityVerlet::step(System& s, const ForceFn& force) {
   // The wrap is per bead, so it joins the drift's pass over each thread's share of the beads.
 #pragma omp parallel num_threads(threads_)
   {
-    const std::size_t t = omp_get_thread_num(), nt = omp_get_num_threads(), lo = n * t / nt, hi = n * (t + 1) / nt;
+    const auto [lo, hi] = team_share(n, omp_get_thread_num(), omp_get_num_threads());
     drift(lo, hi, x, vx, fx, tx), drift(lo, hi, y, vy, fy, ty), drift(lo, hi, z, vz, fz, tz);
     s.wrap(lo, hi);
   }
   const ForceSums sums = force(s, VelocityView{tx, ty, tz});
 #pragma omp parallel num_threads(threads_)
   {
-    const std::size_t t = omp_get_thread_num(), nt = omp_get_num_threads(), lo = n * t / nt, hi = n * (t + 1) / nt;
+    const auto [lo, hi] = team_share(n, omp_get_thread_num(), omp_get_num_threads());
     kick(lo, hi, vx, fx), kick(lo, hi, vy, fy), kick(lo, hi, vz, fz);
   }
   return sums;

@@ -51,7 +51,7 @@ void SortedCells::build(const System& s, double rc) {
 #pragma omp single
   shape(s, rc, omp_get_num_threads());
   const std::size_t t = omp_get_thread_num(), nt = omp_get_num_threads();
-  const std::size_t beads = s.size(), lo = beads * t / nt, hi = beads * (t + 1) / nt;
+  const auto [lo, hi] = team_share(s.size(), t, nt);
   std::uint32_t* next = counts_.data() + t * ncell_;
   count(s, lo, hi, next);
 #pragma omp barrier

@@ -130,6 +130,22 @@ Msd MsdRecorder::finish() const {
   return out;
 }
 
+namespace {
+// Partners j > i of bead i: those in the 27 cells around it, or every later bead when there is no grid.
+template <class F>
+void for_partners(const System& s, const CellGrid& grid, std::size_t i, F&& f) {
+  if (!grid.usable()) {
+    for (std::size_t j = i + 1; j < s.size(); ++j) f(j);
+    return;
+  }
+  int cells[27];
+  grid.stencil(grid.cell_of(s.x[i], s.y[i], s.z[i]), cells);
+  for (int c : cells)
+    for (std::uint32_t k = grid.start()[c]; k < grid.start()[c + 1]; ++k)
+      if (grid.beads()[k] > i) f(grid.beads()[k]);
+}
+}  // namespace
+
 void RdfHistogram::sample(const System& s) {
   const double Lx = s.box.L[0], Ly = s.box.L[1], Lz = s.box.L[2];
   const double r2max = rmax_ * rmax_, inv_dr = bins_ / rmax_;
@@ -139,24 +155,15 @@ void RdfHistogram::sample(const System& s) {
 #pragma omp parallel num_threads(threads_) if (grid.usable())
   {
     std::vector<std::uint64_t> mine(counts_.size(), 0);
-    auto add = [&](std::size_t i, std::size_t j) {
-      const double dx = min_image(s.x[j] - s.x[i], Lx, Lx / 2), dy = min_image(s.y[j] - s.y[i], Ly, Ly / 2),
-                   dz = min_image(s.z[j] - s.z[i], Lz, Lz / 2);
-      const double r2 = dx * dx + dy * dy + dz * dz;
-      if (r2 < r2max) ++mine[std::min<std::size_t>(bins_ - 1, std::size_t(std::sqrt(r2) * inv_dr))];
-    };
-    int cells[27];
 #pragma omp for schedule(dynamic, 256)
     for (std::int64_t q = 0; q < n; ++q) {
       const std::size_t i = static_cast<std::size_t>(q);
-      if (!grid.usable()) {
-        for (std::size_t j = i + 1; j < s.size(); ++j) add(i, j);
-        continue;
-      }
-      grid.stencil(grid.cell_of(s.x[i], s.y[i], s.z[i]), cells);
-      for (int c : cells)
-        for (std::uint32_t k = grid.start()[c]; k < grid.start()[c + 1]; ++k)
-          if (grid.beads()[k] > i) add(i, grid.beads()[k]);
+      for_partners(s, grid, i, [&](std::size_t j) {
+        const double dx = min_image(s.x[j] - s.x[i], Lx, Lx / 2), dy = min_image(s.y[j] - s.y[i], Ly, Ly / 2),
+                     dz = min_image(s.z[j] - s.z[i], Lz, Lz / 2);
+        const double r2 = dx * dx + dy * dy + dz * dz;
+        if (r2 < r2max) ++mine[std::min<std::size_t>(bins_ - 1, std::size_t(std::sqrt(r2) * inv_dr))];
+      });
     }
 #pragma omp critical(dpdrng_rdf)
     for (std::size_t b = 0; b < mine.size(); ++b) counts_[b] += mine[b];

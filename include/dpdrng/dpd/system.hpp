@@ -21,6 +21,13 @@ inline double min_image(double d, double L, double half) {
   return d;
 }
 
+// Member t of a team of nt's contiguous share [lo, hi) of n beads. The integrator and the cell sort split the
+// beads the same way, so a thread mostly reads back what it wrote itself.
+struct Share {
+  std::size_t lo, hi;
+};
+inline Share team_share(std::size_t n, std::size_t t, std::size_t nt) { return {n * t / nt, n * (t + 1) / nt}; }
+
 struct System {
   Box box;
   std::vector<double> x, y, z;     // wrapped into [0, L)
