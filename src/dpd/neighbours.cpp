@@ -49,20 +49,23 @@ void CellGrid::stencil(int c, int out[27]) const {
 
 void SortedCells::build(const System& s, double rc) {
 #pragma omp single
-  shape(s, rc, omp_get_num_threads());
-  const std::size_t t = omp_get_thread_num(), nt = omp_get_num_threads();
-  const auto [lo, hi] = team_share(s.size(), t, nt);
-  std::uint32_t* next = counts_.data() + t * ncell_;
-  count(s, lo, hi, next);
-#pragma omp barrier
-#pragma omp single
-  offsets(static_cast<int>(nt));
-  for (std::size_t i = lo; i < hi; ++i) order_[next[cell_[i]]++] = static_cast<std::uint32_t>(i);
+  prepare(s, rc, omp_get_num_threads());
+  sort(s);
 #pragma omp barrier
 }
 
+void SortedCells::sort(const System& s) {
+  const std::size_t t = omp_get_thread_num(), nt = omp_get_num_threads();
+  const auto [lo, hi] = team_share(s.size(), t, nt);
+  count(s, lo, hi, counts_.data() + t * ncell_);
+#pragma omp barrier
+  places(t, nt);
+  std::uint32_t* next = places_.data() + t * ncell_;
+  for (std::size_t i = lo; i < hi; ++i) order_[next[cell_[i]]++] = static_cast<std::uint32_t>(i);
+}
+
 // The grid for this box, and room for a team of `team` threads.
-void SortedCells::shape(const System& s, double rc, int team) {
+void SortedCells::prepare(const System& s, double rc, int team) {
   // The smallest counts for which the 13 forward neighbours are distinct cells; z needs an even count so
   // that layers of one colour never write to the same layer.
   constexpr int kMin[3] = {3, 3, 4};
@@ -81,6 +84,7 @@ void SortedCells::shape(const System& s, double rc, int team) {
   order_.resize(s.size());
   start_.resize(std::size_t(ncell_) + 1);
   counts_.resize(std::size_t(team) * ncell_);
+  places_.resize(std::size_t(team) * ncell_);
   if (reshaped) fill_forward();
   ++builds_;
 }
@@ -102,18 +106,19 @@ void SortedCells::count(const System& s, std::size_t lo, std::size_t hi, std::ui
   }
 }
 
-// Cell starts, and each thread's first place in each cell: cell by cell, the threads' ranges in order.
-void SortedCells::offsets(int team) {
+// Thread t's first place in each cell: cell by cell, the threads' ranges in order. Every thread sums all the
+// counts itself (16 000 additions at 24 000 beads), which spares the team a barrier; thread 0 writes the cell starts.
+void SortedCells::places(std::size_t t, std::size_t team) {
+  std::uint32_t* mine = places_.data() + t * ncell_;
   std::uint32_t place = 0;
   for (int c = 0; c < ncell_; ++c) {
-    start_[c] = place;
-    for (int t = 0; t < team; ++t) {
-      std::uint32_t& k = counts_[std::size_t(t) * ncell_ + c];
-      const std::uint32_t m = k;
-      k = place, place += m;
+    if (t == 0) start_[c] = place;
+    for (std::size_t u = 0; u < team; ++u) {
+      if (u == t) mine[c] = place;
+      place += counts_[u * ncell_ + c];
     }
   }
-  start_[ncell_] = place;
+  if (t == 0) start_[ncell_] = place;
 }
 
 void SortedCells::fill_forward() {

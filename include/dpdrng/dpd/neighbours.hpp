@@ -35,8 +35,8 @@ class CellGrid {
 // between the cell and its 13 forward neighbours, which lie in the cell's z-layer or the next. A layer's pairs
 // thus write forces to that layer and the next only; with an even number of layers, the even layers write
 // disjoint beads, and so do the odd ones. Even layers run in parallel (each layer's cells in order on one
-// thread), then odd layers: every bead receives its force contributions in the same order whatever the
-// thread count, with two barriers a step, and the pair order (cell by cell, in cell index order) is fixed.
+// thread), and an odd layer after both its even neighbours: every bead receives its force contributions in
+// the same order whatever the thread count, and the pair order (cell by cell, in cell index order) is fixed.
 // The sort can be shared by a team: each thread counts and places a contiguous range of beads, its places
 // within a cell coming after those of the lower ranges, so the order is the serial sort's for any team.
 class SortedCells {
@@ -48,6 +48,11 @@ class SortedCells {
   // along z), one cell holds every bead and owns every pair. Called outside a parallel region, or by every
   // thread of one (orphaned worksharing: callers can run more work in the same region); returns with a barrier.
   void build(const System& s, double rc);
+  // build() in two parts, for a caller whose region goes on to other work: prepare() by one thread (the grid,
+  // and room for a team of `team`), then sort() by every thread of that team. sort() has one barrier inside
+  // and none at its end, so the caller's next barrier is the one that publishes the order.
+  void prepare(const System& s, double rc, int team);
+  void sort(const System& s);
   bool gridded() const { return ncell_ > 1; }
   int cells() const { return ncell_; }
   // z-layers of cells: layer z holds cells [z·layer_cells(), (z + 1)·layer_cells()); its colour is z mod colours().
@@ -64,16 +69,15 @@ class SortedCells {
   std::uint64_t builds() const { return builds_; }
 
  private:
-  void shape(const System& s, double rc, int team);
   void fill_forward();
   std::uint32_t cell_index(double x, double y, double z) const;
   void count(const System& s, std::size_t lo, std::size_t hi, std::uint32_t* counts);
-  void offsets(int team);
+  void places(std::size_t t, std::size_t team);
   int n_[3] = {1, 1, 1};
   int ncell_ = 1;
   double inv_w_[3] = {0, 0, 0};
   std::vector<std::uint32_t> start_, order_, cell_;
-  std::vector<std::uint32_t> counts_;  // per thread and cell: beads, then the thread's next place
+  std::vector<std::uint32_t> counts_, places_;  // per thread and cell: beads; the thread's next place
   std::vector<std::int32_t> forward_;  // kForward per cell, fixed order
   std::uint64_t builds_ = 0;
 };

@@ -6,12 +6,13 @@
 //   cells: the beads are sorted by cell every step (neighbours.hpp) and copied into sorted arrays, both
 //          shared by the team (every sorted slot written once, so any team gives the same arrays); each cell
 //          does its own pairs and those with its 13 forward neighbours, writing both forces at once; even
-//          z-layers of cells run in parallel (disjoint writes), then odd ones. Forces go back to the
-//          System in its own order. Generator inputs use the beads' own indices, so nothing but the
+//          z-layers of cells run in parallel (disjoint writes), and each odd one once its two even
+//          neighbours are done. Each layer's forces go back to the System as soon as they are final. Generator inputs use the beads' own indices, so nothing but the
 //          summation order depends on the sorting.
 #include <omp.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -223,13 +224,13 @@ class PairLoop final : public PairForces {
   }
 
   // Sorted copies of what the pairs read (positions, the dissipative force's velocities, indices, types),
-  // and zeroed sorted forces. Shared by the team of the sort when called inside its region (the scattered
-  // reads cost a one-thread step ~4 % at 24 000 beads); each sorted slot is written by one iteration.
+  // and zeroed sorted forces, by the team of the sort: each thread copies the beads of the layers it will own
+  // (own_layers), so they start in its cache. Each sorted slot is written once.
   void gather(const System& s, VelocityView v) {
-    const std::size_t n = s.size();
+    const auto [z0, z1] = own_layers(omp_get_thread_num(), omp_get_num_threads());
+    const int per_layer = cells_.layer_cells();
     const std::uint32_t* order = cells_.order().data();
-#pragma omp for schedule(static)
-    for (std::size_t k = 0; k < n; ++k) {
+    for (std::uint32_t k = cells_.begin(z0 * per_layer), e = cells_.begin(z1 * per_layer); k < e; ++k) {
       const std::uint32_t i = order[k];
       xs_[k] = s.x[i], ys_[k] = s.y[i], zs_[k] = s.z[i];
       vxs_[k] = v.vx[i], vys_[k] = v.vy[i], vzs_[k] = v.vz[i];
@@ -238,16 +239,11 @@ class PairLoop final : public PairForces {
     }
   }
 
-  // Sorted forces back to the System's order, shared by the team of the colours when called inside their
-  // region; the order is a permutation, so each bead is written once.
-  void scatter(System& s) const {
-    const std::size_t n = s.size();
-    const std::uint32_t* order = cells_.order().data();
-#pragma omp for schedule(static)
-    for (std::size_t k = 0; k < n; ++k) {
-      const std::uint32_t i = order[k];
-      s.fx[i] = fxs_[k], s.fy[i] = fys_[k], s.fz[i] = fzs_[k];
-    }
+  // Thread t of nt owns a contiguous block of layers: its layers' writes to the next layer then stay on the
+  // same core, except at the block's end.
+  std::pair<int, int> own_layers(int t, int nt) const {
+    const int layers = cells_.layers();
+    return {layers * t / nt, layers * (t + 1) / nt};
   }
 
   // Candidates of cell c, contiguous in sc: its own beads first, then those of its forward neighbours.
@@ -340,39 +336,25 @@ class PairLoop final : public PairForces {
 
   ForceSums compute_cells(const Ctx& cx) {
     System& s = cx.s;
+    const bool team = s.size() >= SortedCells::kParallelBeads;
+    cells_.prepare(s, k_.rc, team ? threads_ : 1);
     resize_sorted(s.size());
-    // One team sorts and copies: a fork less than a region each, and a step has few to spare.
-#pragma omp parallel num_threads(threads_) if (s.size() >= SortedCells::kParallelBeads)
-    {
-      cells_.build(s, k_.rc);
-      gather(s, cx.v);
-    }
     const int nc = cells_.cells();
     cell_sums_.resize(std::size_t(nc));
     const bool tap = cx.tap != nullptr;
-    // The stream reference needs every pair's slot in the fixed pair order before the colours run.
-    slot_base_.clear();
-    if (Noise::kStream) {
-      slot_base_.assign(std::size_t(nc) + 1, 0);
-#pragma omp parallel for num_threads(threads_) schedule(dynamic, 8)
-      for (int c = 0; c < nc; ++c) slot_base_[c + 1] = count_cell(s.box, c, scratch_[omp_get_thread_num()]);
-      for (int c = 0; c < nc; ++c) slot_base_[c + 1] += slot_base_[c];
-      noise_.begin_step(slot_base_[nc]);
-    }
     if (tap) cell_tap_.resize(std::size_t(nc));
-    // Three barriers a step (the colours, then the scatter); a box with few layers per colour runs on one
-    // thread (the result does not depend on the team size, so this choice is free).
-    const int colours = cells_.colours(), layers = cells_.layers(), per_layer = cells_.layer_cells();
-    const int team = layers / colours >= 2 * threads_ ? threads_ : 1;
-#pragma omp parallel num_threads(team)
+    slot_base_.assign(Noise::kStream ? std::size_t(nc) + 1 : 0, 0);
+    reset_layers(team);
+    // One region for the step's pair forces: three barriers (inside the sort, after it, after the gather;
+    // the stream reference adds two), then the layers, which wait for their neighbours only, then the join.
+#pragma omp parallel num_threads(threads_) if (team)
     {
-      Scratch& sc = scratch_[omp_get_thread_num()];
-      for (int k = 0; k < colours; ++k) {
-#pragma omp for schedule(dynamic, 1)
-        for (int z = k; z < layers; z += colours)
-          for (int c = z * per_layer; c < (z + 1) * per_layer; ++c) do_cell(cx, c, sc, tap);
-      }
-      scatter(s);
+      cells_.sort(s);
+#pragma omp barrier
+      gather(s, cx.v);
+#pragma omp barrier
+      if constexpr (Noise::kStream) number_pairs(s.box);
+      layers(cx, scratch_[omp_get_thread_num()], tap);
     }
     ForceSums sums;
     sums.min_r2 = k_.rc2();
@@ -386,6 +368,81 @@ class PairLoop final : public PairForces {
         for (int w = 0; w < Noise::kWords; ++w)
           cx.tap->words[w].insert(cx.tap->words[w].end(), cell_tap_[c][w].begin(), cell_tap_[c][w].end());
     return sums;
+  }
+
+  // The stream reference needs every pair's slot, in the fixed pair order, before any layer runs.
+  void number_pairs(const Box& box) {
+    const int nc = cells_.cells();
+#pragma omp for schedule(dynamic, 8)
+    for (int c = 0; c < nc; ++c) slot_base_[c + 1] = count_cell(box, c, scratch_[omp_get_thread_num()]);
+#pragma omp single
+    {
+      for (int c = 0; c < nc; ++c) slot_base_[c + 1] += slot_base_[c];
+      noise_.begin_step(slot_base_[nc]);
+    }
+  }
+
+  // Each worker's queue of layers: its own block's even layers, then its odd ones (a single layer when the box
+  // has no grid). A box with few layers per colour runs on one worker (the result does not depend on the
+  // team size, so this choice is free).
+  void reset_layers(bool team) {
+    const int layers = cells_.layers(), colours = cells_.colours();
+    workers_ = team && layers / colours >= 2 * threads_ ? threads_ : 1;
+    items_.clear(), queue_.assign(std::size_t(workers_) + 1, 0), cursor_.assign(std::size_t(workers_) * kLine, 0);
+    for (int w = 0; w < workers_; ++w) {
+      const auto [z0, z1] = own_layers(w, workers_);
+      for (int colour = 0; colour < colours; ++colour)
+        for (int z = z0; z < z1; ++z)
+          if (z % colours == colour) items_.push_back(z);
+      queue_[w + 1] = int(items_.size());
+      cursor_[std::size_t(w) * kLine] = queue_[w];
+    }
+    done_.assign(std::size_t(layers), 0);
+    pending_.assign(std::size_t(layers), 2);
+  }
+
+  // The next layer for thread t: from its own queue, else taken from another worker's (in that queue's
+  // order, so every even layer is claimed before any odd one of the same queue), or −1 when all are claimed.
+  int claim(int t) {
+    for (int u = 0; u < workers_; ++u) {
+      const int w = (t + u) % workers_;
+      const int q = std::atomic_ref<int>(cursor_[std::size_t(w) * kLine]).fetch_add(1, std::memory_order_relaxed);
+      if (q < queue_[w + 1]) return items_[q];
+    }
+    return -1;
+  }
+
+  // Layer z's cells write forces to layers z and z + 1 only, so the even layers run side by side, and an odd
+  // layer may start once its two even neighbours are done: the same order of contributions for every bead
+  // as two colours with a barrier between them (even layers first), without the barrier: a thread that
+  // finishes early, or whose partner the host has paused, takes the other's remaining layers. No claimed
+  // even layer waits for anything, so an odd one's wait always ends. A layer's forces are final once it
+  // and the layer before it are done; the thread that completes the second copies them to the System.
+  void layers(const Ctx& cx, Scratch& sc, bool tap) {
+    const int layers = cells_.layers(), per_layer = cells_.layer_cells();
+    if (omp_get_thread_num() >= workers_) return;
+    for (int z; (z = claim(omp_get_thread_num())) >= 0;) {
+      if (z % cells_.colours() != 0) await_layer(z - 1), await_layer((z + 1) % layers);
+      for (int c = z * per_layer; c < (z + 1) * per_layer; ++c) do_cell(cx, c, sc, tap);
+      std::atomic_ref<int>(done_[z]).store(1, std::memory_order_release);
+      contributed(cx.s, z), contributed(cx.s, (z + 1) % layers);
+    }
+  }
+
+  void await_layer(int z) const {
+    std::atomic_ref<int> done(const_cast<int&>(done_[z]));
+    while (done.load(std::memory_order_acquire) == 0) __builtin_ia32_pause();
+  }
+
+  // One of layer z's two contributors is done; the thread completing the second scatters the layer.
+  void contributed(System& s, int z) {
+    if (std::atomic_ref<int>(pending_[z]).fetch_sub(1, std::memory_order_acq_rel) != 1) return;
+    const int per_layer = cells_.layer_cells();
+    const std::uint32_t* order = cells_.order().data();
+    for (std::uint32_t k = cells_.begin(z * per_layer), e = cells_.end((z + 1) * per_layer - 1); k < e; ++k) {
+      const std::uint32_t i = order[k];
+      s.fx[i] = fxs_[k], s.fy[i] = fys_[k], s.fz[i] = fzs_[k];
+    }
   }
 
   ForceSums reduce(System& s) const {
@@ -439,6 +496,11 @@ class PairLoop final : public PairForces {
   std::vector<std::uint8_t> types_;
   std::vector<CellSums> cell_sums_;
   std::vector<std::uint64_t> slot_base_;
+  // The layers' schedule (reset_layers), used through atomic_ref: per layer, done and contributors pending;
+  // per worker, its queue items_[queue_[w], queue_[w + 1]) and its cursor, a cache line apart from the others.
+  static constexpr std::size_t kLine = 16;
+  int workers_ = 1;
+  std::vector<int> done_, pending_, items_, queue_, cursor_;
   std::vector<std::array<std::vector<std::uint64_t>, 2>> cell_tap_;
 };
 
