@@ -1,0 +1,42 @@
+// `dpdrng bench dpd`: the scaling comparison's JSON contract and its refusals. Speeds are not asserted (the
+// CI machine is shared); what is checked is that every measured pair and side-by-side run is reported.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "run_cli.hpp"
+
+namespace dpdrng::cli_test {
+namespace {
+
+TEST(CliBenchDpd, ScalingOnlyReportsEveryPairAndTheSideBySideRuns) {
+  const Result r = run("bench dpd --scaling-only --repeat 2 --steps-cells 5 --particles-cells 3000 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_FALSE(j.contains("throughput"));
+  EXPECT_FALSE(j.contains("paper"));
+  ASSERT_EQ(j["scaling"].size(), 2u);
+  EXPECT_EQ(j["scaling"][0]["threads"], 1);
+  EXPECT_EQ(j["scaling"][1]["threads"], 2);
+  EXPECT_EQ(j["scaling"][0]["particles"], 3000);
+  for (const char* key : {"scaling_pair_ratios", "scaling_side_by_side_ratios"}) {
+    ASSERT_EQ(j[key].size(), 2u) << key;
+    for (double v : j[key]) EXPECT_TRUE(std::isfinite(v) && v > 0) << key << " " << v;
+  }
+  // The medians are the middle of the two sorted pairs' ratios (the upper one for an even count).
+  const double a = j["scaling_side_by_side_ratios"][0], b = j["scaling_side_by_side_ratios"][1];
+  EXPECT_EQ(j["scaling_side_by_side_2_copies"].get<double>(), std::max(a, b));
+}
+
+TEST(CliBenchDpd, RefusesBadArgumentsBeforeAnyRun) {
+  for (const char* args : {"bench dpd --repeat 0", "bench dpd --scaling-only --no-scaling",
+                           "bench dpd --generators tea32,nope", "bench dpd --rounds 0", "bench dpd --pairs some"}) {
+    const Result r = run(args);
+    EXPECT_EQ(r.code, 2) << args;
+    EXPECT_FALSE(r.err.empty()) << args;
+  }
+}
+
+}  // namespace
+}  // namespace dpdrng::cli_test
