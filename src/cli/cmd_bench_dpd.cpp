@@ -274,8 +274,8 @@ void run_bench_dpd(const BenchDpdArgs& a) {
   const auto& tea = rng::find_generator("tea32");
   for (long long r : parse_int_list(a.rounds, "--rounds"))
     if (r < tea.min_rounds || r > tea.max_rounds)
-      throw InputError("--rounds: " + std::to_string(r) + " is outside tea32/tea64's " + std::to_string(tea.min_rounds) +
-                       ".." + std::to_string(tea.max_rounds));
+      throw InputError("--rounds: " + std::to_string(r) + " is outside tea32/tea64's " +
+                       std::to_string(tea.min_rounds) + ".." + std::to_string(tea.max_rounds));
   for (const auto& p : split(a.pairs)) dpd::parse_pair_mode(p);
   for (const auto& g : split(a.generators)) rng::find_generator(g);  // InputError for unknown names
 

@@ -7,8 +7,9 @@
 //          shared by the team (every sorted slot written once, so any team gives the same arrays); each cell
 //          does its own pairs and those with its 13 forward neighbours, writing both forces at once; even
 //          z-layers of cells run in parallel (disjoint writes), and each odd one once its two even
-//          neighbours are done. Each layer's forces go back to the System as soon as they are final. Generator inputs use the beads' own indices, so nothing but the
-//          summation order depends on the sorting.
+//          neighbours are done. Each layer's forces go back to the System as soon as they are final.
+//          Generator inputs use the beads' own indices, so nothing but the summation order depends on the
+//          sorting.
 #include <omp.h>
 
 #include <algorithm>
@@ -223,7 +224,7 @@ class PairLoop final : public PairForces {
     types_.resize(n);
   }
 
-  // Sorted copies of what the pairs read (positions, the dissipative force's velocities, indices, types),
+  // Sorted copies of what the pairs read (positions, the dissipative force's velocities, types),
   // and zeroed sorted forces, by the team of the sort: each thread copies the beads of the layers it will own
   // (own_layers), so they start in its cache. Each sorted slot is written once.
   void gather(const System& s, VelocityView v) {
@@ -354,7 +355,7 @@ class PairLoop final : public PairForces {
       gather(s, cx.v);
 #pragma omp barrier
       if constexpr (Noise::kStream) number_pairs(s.box);
-      layers(cx, scratch_[omp_get_thread_num()], tap);
+      run_layers(cx, scratch_[omp_get_thread_num()], tap);
     }
     ForceSums sums;
     sums.min_r2 = k_.rc2();
@@ -418,7 +419,7 @@ class PairLoop final : public PairForces {
   // finishes early, or whose partner the host has paused, takes the other's remaining layers. No claimed
   // even layer waits for anything, so an odd one's wait always ends. A layer's forces are final once it
   // and the layer before it are done; the thread that completes the second copies them to the System.
-  void layers(const Ctx& cx, Scratch& sc, bool tap) {
+  void run_layers(const Ctx& cx, Scratch& sc, bool tap) {
     const int layers = cells_.layers(), per_layer = cells_.layer_cells();
     if (omp_get_thread_num() >= workers_) return;
     for (int z; (z = claim(omp_get_thread_num())) >= 0;) {
