@@ -36,33 +36,36 @@ WaterConfig zero_noise_config(PairMode mode) {
 }
 }  // namespace
 
-// Three beads on a line in a box of 5, at rest, no noise: bead 0 at x = 0.2, bead 1 at 0.9 (r = 0.7),
-// bead 2 at 4.8 whose image sits at −0.2 (r = 0.4 from bead 0); beads 1 and 2 are 1.1 apart (no force).
+// Three beads on a line in a box of L, at rest, no noise: bead 0 at x = 0.2, bead 1 at 0.9 (r = 0.7),
+// bead 2 at L − 0.2 whose image sits at −0.2 (r = 0.4 from bead 0); beads 1 and 2 are 1.1 apart (no force).
 //   F_0 = −25·0.3 + 25·0.6 = +7.5,  F_1 = +7.5,  F_2 = −15;  Σ r·F^C = 25·0.3·0.7 + 25·0.6·0.4 = 11.25 (xx only).
+// L = 5 gives cells mode a grid (5 × 5 × 4 cells); L = 2.5 is too small for one: a single cell owns every pair.
 TEST(PairLoop, ThreeBeadsThroughThePeriodicBoundary) {
-  for (PairMode mode : {PairMode::all, PairMode::cells}) {
-    System s;
-    s.box = Box{{5, 5, 5}};
-    s.resize(3);
-    s.x = {0.2, 0.9, 4.8};
-    s.y = {0.5, 0.5, 0.5};
-    s.z = {0.5, 0.5, 0.5};
-    const WaterConfig cfg = zero_noise_config(mode);
-    auto pf = make_pair_forces(cfg, make_kernel(25, 1, 4.5, 1, 0.04), 3);
-    Taps taps;
-    const ForceSums f = pf->compute(s, VelocityView{s.vx.data(), s.vy.data(), s.vz.data()}, 0, false, false, taps);
-    EXPECT_NEAR(s.fx[0], 7.5, 1e-12) << to_string(mode);
-    EXPECT_NEAR(s.fx[1], 7.5, 1e-12);
-    EXPECT_NEAR(s.fx[2], -15.0, 1e-12);
-    for (int i = 0; i < 3; ++i) {
-      EXPECT_EQ(s.fy[i], 0.0);
-      EXPECT_EQ(s.fz[i], 0.0);
+  for (double L : {5.0, 2.5}) {
+    for (PairMode mode : {PairMode::all, PairMode::cells}) {
+      System s;
+      s.box = Box{{L, L, L}};
+      s.resize(3);
+      s.x = {0.2, 0.9, L - 0.2};
+      s.y = {0.5, 0.5, 0.5};
+      s.z = {0.5, 0.5, 0.5};
+      const WaterConfig cfg = zero_noise_config(mode);
+      auto pf = make_pair_forces(cfg, make_kernel(25, 1, 4.5, 1, 0.04), 3);
+      Taps taps;
+      const ForceSums f = pf->compute(s, VelocityView{s.vx.data(), s.vy.data(), s.vz.data()}, 0, false, false, taps);
+      EXPECT_NEAR(s.fx[0], 7.5, 1e-12) << to_string(mode) << " L = " << L;
+      EXPECT_NEAR(s.fx[1], 7.5, 1e-12);
+      EXPECT_NEAR(s.fx[2], -15.0, 1e-12);
+      for (int i = 0; i < 3; ++i) {
+        EXPECT_EQ(s.fy[i], 0.0);
+        EXPECT_EQ(s.fz[i], 0.0);
+      }
+      EXPECT_NEAR(f.virial_cons[0], 11.25, 1e-12);
+      EXPECT_NEAR(f.virial[0], 11.25, 1e-12);  // no velocity, no noise: the total is the conservative part
+      EXPECT_EQ(f.virial_cons[1], 0.0);
+      EXPECT_EQ(f.in_range, 2u);
+      EXPECT_NEAR(f.min_r2, 0.16, 1e-12);
     }
-    EXPECT_NEAR(f.virial_cons[0], 11.25, 1e-12);
-    EXPECT_NEAR(f.virial[0], 11.25, 1e-12);  // no velocity, no noise: the total is the conservative part
-    EXPECT_EQ(f.virial_cons[1], 0.0);
-    EXPECT_EQ(f.in_range, 2u);
-    EXPECT_NEAR(f.min_r2, 0.16, 1e-12);
   }
 }
 
