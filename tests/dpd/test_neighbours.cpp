@@ -1,6 +1,7 @@
 // The cells-mode pair search: every pair inside r_c owned by exactly one cell, same-colour cells writing
 // disjoint beads, and the sorted, coloured loop giving the all-pairs forces and thread-independent bits.
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <bit>
 #include <cmath>
@@ -173,4 +174,21 @@ TEST(CellsLoop, SameBitsForAnyThreadCount) {
       }
     }
   }
+}
+
+// A team smaller than the one asked for (OMP_THREAD_LIMIT, or a region inside another with nesting off) still
+// runs every layer, with the same bits. Here the loop asks for 2 threads inside an active region, so it gets 1;
+// layer queues planned for 2 threads once left an odd layer waiting forever for an even one nobody claimed.
+TEST(CellsLoop, SmallerTeamThanAskedRunsEveryLayer) {
+  const System s = fluid(12288, 16.0);
+  const Forces one = forces(s, PairMode::cells, "tea32", 1);
+  const int levels = omp_get_max_active_levels();
+  omp_set_max_active_levels(1);
+  Forces inner;
+#pragma omp parallel num_threads(2)
+  if (omp_get_thread_num() == 0) inner = forces(s, PairMode::cells, "tea32", 2);
+  omp_set_max_active_levels(levels);
+  ASSERT_EQ(inner.f.size(), one.f.size());
+  for (std::size_t c = 0; c < one.f.size(); ++c)
+    ASSERT_EQ(std::bit_cast<std::uint64_t>(one.f[c]), std::bit_cast<std::uint64_t>(inner.f[c])) << "component " << c;
 }

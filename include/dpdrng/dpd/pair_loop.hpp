@@ -345,13 +345,15 @@ class PairLoop final : public PairForces {
     const bool tap = cx.tap != nullptr;
     if (tap) cell_tap_.resize(std::size_t(nc));
     slot_base_.assign(Noise::kStream ? std::size_t(nc) + 1 : 0, 0);
-    reset_layers(team);
     // One region for the step's pair forces: three barriers (inside the sort, after it, after the gather;
     // the stream reference adds two), then the layers, which wait for their neighbours only, then the join.
 #pragma omp parallel num_threads(threads_) if (team)
     {
       cells_.sort(s);
-#pragma omp barrier
+      // The team actually granted, which OMP_THREAD_LIMIT or an enclosing region can make smaller than asked:
+      // a queue without a thread behind it could hold an even layer that an odd one waits for forever.
+#pragma omp single
+      reset_layers(omp_get_num_threads());
       gather(s, cx.v);
 #pragma omp barrier
       if constexpr (Noise::kStream) number_pairs(s.box);
@@ -385,10 +387,10 @@ class PairLoop final : public PairForces {
 
   // Each worker's queue of layers: its own block's even layers, then its odd ones (a single layer when the box
   // has no grid). A box with few layers per colour runs on one worker (the result does not depend on the
-  // team size, so this choice is free).
-  void reset_layers(bool team) {
+  // team size, so this choice is free). Every worker must be a thread of the team that runs the layers.
+  void reset_layers(int team) {
     const int layers = cells_.layers(), colours = cells_.colours();
-    workers_ = team && layers / colours >= 2 * threads_ ? threads_ : 1;
+    workers_ = layers / colours >= 2 * team ? team : 1;
     items_.clear(), queue_.assign(std::size_t(workers_) + 1, 0), cursor_.assign(std::size_t(workers_) * kLine, 0);
     for (int w = 0; w < workers_; ++w) {
       const auto [z0, z1] = own_layers(w, workers_);
