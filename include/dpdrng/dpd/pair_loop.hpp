@@ -432,8 +432,8 @@ class PairLoop final : public PairForces {
     }
   }
 
-  void await_layer(int z) const {
-    std::atomic_ref<int> done(const_cast<int&>(done_[z]));
+  void await_layer(int z) {
+    std::atomic_ref<int> done(done_[z]);
     while (done.load(std::memory_order_acquire) == 0) __builtin_ia32_pause();
   }
 
