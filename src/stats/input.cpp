@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <memory>
 
 #include "dpdrng/common/error.hpp"
@@ -102,7 +103,17 @@ std::vector<double> decode_values(std::span<const char> bytes, InputFormat forma
   return out;
 }
 
+void check_input_path(const std::string& path) {
+  if (path == "-") return;
+  std::error_code ec;
+  const auto st = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(st))
+    throw InputError("cannot open '" + path + "': " + (ec ? ec.message() : std::string("no such file")));
+  if (std::filesystem::is_directory(st)) throw InputError("'" + path + "' is a directory, not an input file");
+}
+
 std::vector<double> read_values(const std::string& path, InputFormat format) {
+  check_input_path(path);
   const bool from_stdin = path == "-";
   const std::string source = from_stdin ? "standard input" : path;
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> owned(from_stdin ? nullptr : std::fopen(path.c_str(), "rb"),

@@ -23,4 +23,8 @@ std::vector<double> decode_values(std::span<const char> bytes, InputFormat forma
 // Reads `path` ("-" = standard input) completely and decodes it. Throws InputError when it cannot be opened.
 std::vector<double> read_values(const std::string& path, InputFormat format);
 
+// Throws InputError when `path` (not "-") names nothing, a directory or something unreadable, so that every
+// input reader says why in the same words.
+void check_input_path(const std::string& path);
+
 }  // namespace dpdrng::stats

@@ -26,8 +26,9 @@ TestResult run_test(Test t, const BitSequence& s, const Parameters& p) {
     case Test::LongestRun: return longest_run(s);
     case Test::Rank: return rank(s);
     case Test::FFT: return fft(s);
-    case Test::NonOverlappingTemplate: return non_overlapping_template(s, p.non_overlapping_m);
-    case Test::OverlappingTemplate: return overlapping_template(s, p.overlapping_m);
+    case Test::NonOverlappingTemplate:
+      return non_overlapping_template(s, p.non_overlapping_m, p.non_overlapping_templates, p.non_overlapping_blocks);
+    case Test::OverlappingTemplate: return overlapping_template(s, p.overlapping_m, p.overlapping_M, p.overlapping_K);
     case Test::Universal: return universal(s, p.universal_L, p.universal_Q);
     case Test::ApproximateEntropy: return approximate_entropy(s, p.approximate_entropy_m);
     case Test::RandomExcursions: return random_excursions(s);

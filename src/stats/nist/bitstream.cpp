@@ -5,8 +5,25 @@
 #include <iostream>
 
 #include "dpdrng/common/error.hpp"
+#include "dpdrng/stats/input.hpp"
 
 namespace dpdrng::stats::nist {
+
+namespace {
+
+// Printable ASCII and white space: what a '0'/'1' text file may hold besides its bits (the reference skips it).
+bool is_text(char c) {
+  const auto u = static_cast<unsigned char>(c);
+  return (u >= 0x20 && u < 0x7f) || c == '\n' || c == '\r' || c == '\t' || c == '\v' || c == '\f';
+}
+
+std::string hex(char c) {
+  constexpr char kDigits[] = "0123456789abcdef";
+  const auto u = static_cast<unsigned char>(c);
+  return {kDigits[u >> 4], kDigits[u & 15]};
+}
+
+}  // namespace
 
 BitFormat parse_bit_format(std::string_view name) {
   if (name == "ascii") return BitFormat::ascii;
@@ -27,15 +44,23 @@ BitSequence read_bits(std::istream& in, BitFormat format, std::size_t max_bits) 
     return all.size() > max_bits ? all.slice(0, max_bits) : all;
   }
   BitSequence s;
+  std::size_t offset = 0;
   while (s.size() < max_bits && in) {
     in.read(buf.data(), static_cast<std::streamsize>(buf.size()));
-    for (std::streamsize i = 0; i < in.gcount() && s.size() < max_bits; ++i)
-      if (buf[i] == '0' || buf[i] == '1') s.push_back(buf[i] == '1');
+    for (std::streamsize i = 0; i < in.gcount() && s.size() < max_bits; ++i, ++offset) {
+      const char c = buf[i];
+      if (c == '0' || c == '1')
+        s.push_back(c == '1');
+      else if (!is_text(c))
+        throw InputError("byte " + std::to_string(offset) + " of the ASCII bit input is not text (0x" + hex(c) +
+                         "): binary data? Use --format raw for bytes");
+    }
   }
   return s;
 }
 
 BitSequence read_bits(const std::string& path, BitFormat format, std::size_t max_bits) {
+  check_input_path(path);
   if (path == "-") {
     std::ios::sync_with_stdio(false);
     return read_bits(std::cin, format, max_bits);

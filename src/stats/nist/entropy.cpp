@@ -55,11 +55,21 @@ double phi(const std::vector<std::uint32_t>& counts, std::size_t n) {
 
 }  // namespace
 
+std::optional<ParameterProblem> check_serial(int m) {
+  if (m < 2 || m > 24) return ParameterProblem{"serial_m", m, "must be within 2..24"};
+  return std::nullopt;
+}
+
+std::optional<ParameterProblem> check_approximate_entropy(int m) {
+  if (m < 0 || m > 23) return ParameterProblem{"approximate_entropy_m", m, "must be within 0..23"};
+  return std::nullopt;
+}
+
 TestResult serial(const BitSequence& s, int m) {
+  require_valid(check_serial(m));
   TestResult r = make(Test::Serial, s.size());
   r.values = {{"p1", NAN, NAN}, {"p2", NAN, NAN}};
   r.parameters = {{"m", m}};
-  if (m < 2 || m > 24) return not_applicable(r, "block length m must be within 2..24", 0);
   const std::size_t n = s.size();
   if (n < static_cast<std::size_t>(m)) return too_short(r, static_cast<std::size_t>(m), "one block of m bits");
   const auto c0 = circular_counts(s, m);
@@ -76,9 +86,9 @@ TestResult serial(const BitSequence& s, int m) {
 }
 
 TestResult approximate_entropy(const BitSequence& s, int m) {
+  require_valid(check_approximate_entropy(m));
   TestResult r = make(Test::ApproximateEntropy, s.size());
   r.parameters = {{"m", m}};
-  if (m < 0 || m > 23) return not_applicable(r, "block length m must be within 0..23", 0);
   const std::size_t n = s.size();
   if (n < static_cast<std::size_t>(m) + 1) return too_short(r, static_cast<std::size_t>(m) + 1, "one block of m+1 bits");
   const auto c1 = circular_counts(s, m + 1);

@@ -20,10 +20,17 @@ TestResult frequency(const BitSequence& s) {
   return r;
 }
 
+std::optional<ParameterProblem> check_block_frequency(int M) {
+  if (M < 2)
+    return ParameterProblem{"block_frequency_M", M,
+                            "must be at least 2 (with M = 1 every sequence gives chi^2 = N: the test cannot fail)"};
+  return std::nullopt;
+}
+
 TestResult block_frequency(const BitSequence& s, int M) {
+  require_valid(check_block_frequency(M));
   TestResult r = make(Test::BlockFrequency, s.size());
   r.parameters = {{"M", M}};
-  if (M < 1) return not_applicable(r, "block length M must be positive", 0);
   const std::size_t N = s.size() / static_cast<std::size_t>(M);
   r.parameters.push_back({"N", static_cast<double>(N)});
   if (N == 0) return too_short(r, static_cast<std::size_t>(M), "one block of M bits");

@@ -36,11 +36,19 @@ std::string bits_string(std::uint32_t v, int m) {
 
 }  // namespace
 
+std::optional<ParameterProblem> check_non_overlapping(int m, std::span<const std::uint32_t> templates, int blocks) {
+  if (m < 2 || m > 21) return ParameterProblem{"non_overlapping_m", m, "must be within 2..21"};
+  if (blocks < 1) return ParameterProblem{"non_overlapping_blocks", blocks, "must be at least 1"};
+  for (const std::uint32_t t : templates)
+    if (t >> m != 0)
+      return ParameterProblem{"non_overlapping_templates", t, "does not fit in m = " + std::to_string(m) + " bits"};
+  return std::nullopt;
+}
+
 TestResult non_overlapping_template(const BitSequence& s, int m, std::span<const std::uint32_t> templates,
                                     int blocks) {
+  require_valid(check_non_overlapping(m, templates, blocks));
   TestResult r = make(Test::NonOverlappingTemplate, s.size());
-  if (m < 2 || m > 21) return not_applicable(r, "template length m must be within 2..21", 0);
-  if (blocks < 1) return not_applicable(r, "the number of blocks must be positive", 0);
   std::vector<std::uint32_t> own;
   if (templates.empty()) {
     own = aperiodic_templates(m);
@@ -127,20 +135,43 @@ double overlap_probability(int u, double eta) {
   return sum;
 }
 
-}  // namespace
+// eta = lambda / 2, lambda = (M - m + 1) / 2^m.
+double overlap_eta(int m, int M) { return static_cast<double>(M - m + 1) / std::pow(2, m) / 2.0; }
 
-TestResult overlapping_template(const BitSequence& s, int m, int M, int K) {
-  TestResult r = make(Test::OverlappingTemplate, s.size());
-  if (m < 1 || m > 32 || M < m || K < 1) return not_applicable(r, "needs 1 <= m <= 32, M >= m and K >= 1", 0);
-  const std::size_t N = s.size() / static_cast<std::size_t>(M);
-  const double lambda = static_cast<double>(M - m + 1) / std::pow(2, m);
-  const double eta = lambda / 2.0;
-  r.parameters = {{"m", m}, {"M", M}, {"K", K}, {"N", static_cast<double>(N)}, {"lambda", lambda}, {"eta", eta}};
-  if (N == 0) return too_short(r, static_cast<std::size_t>(M), "one block of M bits");
-  std::vector<double> pi(K + 1);
+// Classes 0..K-1 occurrences and "K or more".
+std::vector<double> overlap_classes(int K, double eta) {
+  std::vector<double> pi(static_cast<std::size_t>(K) + 1);
   double sum = 0;
   for (int i = 0; i < K; ++i) sum += pi[i] = overlap_probability(i, eta);
   pi[K] = 1 - sum;
+  return pi;
+}
+
+}  // namespace
+
+std::optional<ParameterProblem> check_overlapping(int m, int M, int K) {
+  if (m < 1 || m > 32) return ParameterProblem{"overlapping_m", m, "must be within 1..32"};
+  if (M < m) return ParameterProblem{"overlapping_M", M, "must be at least m = " + std::to_string(m)};
+  if (K < 1 || K > 64) return ParameterProblem{"overlapping_K", K, "must be within 1..64"};
+  // chi^2 divides by every class probability: each must be positive (too many classes for a short block leave
+  // the last one with 1 - sum <= 0 in floating point).
+  for (const double p : overlap_classes(K, overlap_eta(m, M)))
+    if (!(p > 0))
+      return ParameterProblem{"overlapping_K", K,
+                              "leaves a class with probability 0 for m = " + std::to_string(m) +
+                                  " and M = " + std::to_string(M) + ": use fewer classes"};
+  return std::nullopt;
+}
+
+TestResult overlapping_template(const BitSequence& s, int m, int M, int K) {
+  require_valid(check_overlapping(m, M, K));
+  TestResult r = make(Test::OverlappingTemplate, s.size());
+  const std::size_t N = s.size() / static_cast<std::size_t>(M);
+  const double eta = overlap_eta(m, M);
+  const double lambda = 2 * eta;
+  r.parameters = {{"m", m}, {"M", M}, {"K", K}, {"N", static_cast<double>(N)}, {"lambda", lambda}, {"eta", eta}};
+  if (N == 0) return too_short(r, static_cast<std::size_t>(M), "one block of M bits");
+  const std::vector<double> pi = overlap_classes(K, eta);
   const std::uint32_t ones = static_cast<std::uint32_t>((std::uint64_t{1} << m) - 1);
   std::vector<double> nu(K + 1, 0);
   for (std::size_t i = 0; i < N; ++i) {

@@ -30,18 +30,31 @@ int reference_L(std::size_t n) {
 
 }  // namespace
 
+std::optional<ParameterProblem> check_universal(int L, int Q) {
+  // Coron's c(L, K) = 0.7 - 0.8/L + ... is negative at L = 1 (for every K >= 3), which would make sigma negative
+  // and P up to 2.
+  if (L != 0 && (L < 2 || L > 16))
+    return ParameterProblem{"universal_L", L,
+                            "must be 0 (chosen from n) or within 2..16 (at L = 1 the variance factor c(L, K) is "
+                            "negative)"};
+  if (Q < 0) return ParameterProblem{"universal_Q", Q, "must be 0 (10 * 2^L) or positive"};
+  return std::nullopt;
+}
+
 TestResult universal(const BitSequence& s, int L, int Q) {
+  require_valid(check_universal(L, Q));
   TestResult r = make(Test::Universal, s.size());
   const std::size_t n = s.size();
   if (L == 0) {
     L = reference_L(n);
     if (L < 6) return too_short(r, 387840, "the reference's smallest block length L = 6");
   }
-  if (L < 1 || L > 16) return not_applicable(r, "block length L must be within 1..16", 0);
   if (Q == 0) Q = 10 * (1 << L);
   const long K = static_cast<long>(n / L) - Q;
   r.parameters = {{"L", L}, {"Q", Q}, {"K", static_cast<double>(K)}};
-  if (K < 1) return too_short(r, static_cast<std::size_t>(Q + 1) * L, "Q initialisation blocks plus one");
+  if (K < 1)
+    return too_short(r, (static_cast<std::size_t>(Q) + 1) * static_cast<std::size_t>(L),
+                     "Q initialisation blocks plus one");
   const double c = 0.7 - 0.8 / L + (4 + 32.0 / L) * std::pow(static_cast<double>(K), -3.0 / L) / 15;
   const double sigma = c * std::sqrt(kVariance[L] / K);
   std::vector<long> last(std::size_t{1} << L, 0);

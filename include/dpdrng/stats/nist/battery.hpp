@@ -7,21 +7,10 @@
 #include <vector>
 
 #include "dpdrng/stats/nist/bitseq.hpp"
+#include "dpdrng/stats/nist/parameters.hpp"
 #include "dpdrng/stats/nist/result.hpp"
 
 namespace dpdrng::stats::nist {
-
-// Every tunable parameter, defaulting to the reference's (sts-2.1.2 assess.c) values.
-struct Parameters {
-  int block_frequency_M = 128;
-  int non_overlapping_m = 9;
-  int overlapping_m = 9;
-  int universal_L = 0;  // 0 = chosen from n as the reference does
-  int universal_Q = 0;  // 0 = 10 * 2^L
-  int approximate_entropy_m = 10;
-  int serial_m = 16;
-  int linear_complexity_M = 500;
-};
 
 // All 15 tests in the reference's order.
 std::vector<Test> all_tests();

@@ -1,6 +1,8 @@
 #pragma once
-// Reading bit streams the way the reference suite does: ASCII '0'/'1' (anything else skipped) or raw bytes,
-// most significant bit of each byte first; from a file or standard input ("-").
+// Reading bit streams the way the reference suite does: ASCII '0'/'1' (other text skipped) or raw bytes, most
+// significant bit of each byte first; from a file or standard input ("-"). ASCII input holding a byte that is not
+// text (a control character other than white space, or >= 0x80) is refused as binary data: the reference would
+// test the few stray '0'/'1' bytes of a binary file.
 #include <cstddef>
 #include <cstdint>
 #include <istream>

@@ -4,11 +4,14 @@
 // Where the reference code differs from the printed text, these follow the code, because its numbers are the
 // ones everybody compares with; each such choice is named at the function and collected in
 // docs/nist-conventions.md. P-values come from GSL (incomplete gamma, erfc, normal CDF).
+// A parameter outside its rule (parameters.hpp) throws std::invalid_argument; a sequence too short for valid
+// parameters gives "not applicable" with the bits needed.
 #include <cstdint>
 #include <span>
 #include <vector>
 
 #include "dpdrng/stats/nist/bitseq.hpp"
+#include "dpdrng/stats/nist/parameters.hpp"
 #include "dpdrng/stats/nist/result.hpp"
 
 namespace dpdrng::stats::nist {

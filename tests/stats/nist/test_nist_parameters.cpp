@@ -1,0 +1,131 @@
+// Parameter rules of the SP800-22 tests: a parameter outside its rule is the caller's error (std::invalid_argument,
+// exit 2 at the CLI), never "not applicable" and never a P-value; the limits are where the test's mathematics
+// stops holding, checked here against independent references.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <stdexcept>
+#include <vector>
+
+#include "dpdrng/stats/nist/battery.hpp"
+#include "dpdrng/stats/nist/tests.hpp"
+
+using namespace dpdrng::stats::nist;
+using NistTest = dpdrng::stats::nist::Test;
+
+namespace {
+
+BitSequence random_bits(std::size_t n, unsigned seed) {
+  std::mt19937 g(seed);
+  std::vector<std::uint8_t> bits(n);
+  for (auto& b : bits) b = static_cast<std::uint8_t>(g() & 1);
+  return BitSequence::from_bits(bits);
+}
+
+// Exact probabilities of the linear-complexity test's 7 classes for random M-bit blocks, from Rueppel's count of
+// binary sequences of length M by linear complexity L (Rueppel, "Analysis and Design of Stream Ciphers", 1986:
+// 1 sequence with L = 0, 2^(2L-1) for 1 <= L <= M/2, 2^(2(M-L)) above), binned with SP800-22 2.10's T.
+std::vector<double> exact_linear_complexity_classes(int M) {
+  std::vector<double> p(7, 0.0);
+  const double sign1 = (M + 1) % 2 == 0 ? -1.0 : 1.0, sign2 = M % 2 == 0 ? 1.0 : -1.0;
+  const double mean = M / 2.0 + (9.0 + sign1) / 36.0 - std::pow(2.0, -M) * (M / 3.0 + 2.0 / 9.0);
+  for (int L = 0; L <= M; ++L) {
+    const double count = L == 0 ? 1.0 : (2 * L <= M ? std::pow(2.0, 2 * L - 1) : std::pow(2.0, 2 * (M - L)));
+    const double T = sign2 * (L - mean) + 2.0 / 9.0;
+    const int k = T <= -2.5 ? 0 : T <= -1.5 ? 1 : T <= -0.5 ? 2 : T <= 0.5 ? 3 : T <= 1.5 ? 4 : T <= 2.5 ? 5 : 6;
+    p[k] += count * std::pow(2.0, -M);
+  }
+  return p;
+}
+
+double worst_relative_error(int M) {
+  constexpr double kTable[7] = {0.01047, 0.03125, 0.12500, 0.50000, 0.25000, 0.06250, 0.020833};
+  const auto p = exact_linear_complexity_classes(M);
+  double worst = 0;
+  for (int k = 0; k < 7; ++k) worst = std::max(worst, std::fabs(p[k] - kTable[k]) / kTable[k]);
+  return worst;
+}
+
+}  // namespace
+
+TEST(NistParameters, LinearComplexityBlocksShorterThan12DoNotFollowTheTable) {
+  // Rueppel's exact distribution sums to 1 (a check on the reference itself).
+  for (int M : {12, 500}) {
+    double total = 0;
+    for (double x : exact_linear_complexity_classes(M)) total += x;
+    EXPECT_NEAR(total, 1.0, 1e-12);
+  }
+  EXPECT_LT(worst_relative_error(12), 0.01);
+  EXPECT_LT(worst_relative_error(500), 0.01);
+  EXPECT_GT(worst_relative_error(11), 0.01);
+  EXPECT_FALSE(check_linear_complexity(12));
+  EXPECT_TRUE(check_linear_complexity(11));
+  EXPECT_TRUE(check_linear_complexity(1));
+  // M = 1 used to give p = 0 for every sequence: every block's class is 3 or 4.
+  EXPECT_THROW(linear_complexity(random_bits(5000, 1), 1), std::invalid_argument);
+}
+
+TEST(NistParameters, UniversalRefusesL1WhereTheVarianceFactorIsNegative) {
+  // Coron's c(L, K) = 0.7 - 0.8/L + (4 + 32/L) K^(-3/L) / 15 (SP800-22 2.9.4): negative at L = 1 for every
+  // K >= 3, which made sigma negative and P = erfc(-x) up to 2.
+  for (const double K : {3.0, 100.0, 1e7}) EXPECT_LT(0.7 - 0.8 + 36.0 * std::pow(K, -3.0) / 15.0, 0.0);
+  EXPECT_GT(0.7 - 0.4 + 20.0 * std::pow(2.0, -1.5) / 15.0, 0.0);  // L = 2, the smallest K
+  EXPECT_TRUE(check_universal(1, 0));
+  EXPECT_FALSE(check_universal(2, 4));
+  EXPECT_FALSE(check_universal(0, 0));
+  EXPECT_TRUE(check_universal(17, 0));
+  EXPECT_TRUE(check_universal(6, -1));  // a negative Q indexed before the sequence: a crash, once
+  EXPECT_THROW(universal(random_bits(4000, 2), 1), std::invalid_argument);
+  EXPECT_THROW(universal(random_bits(4000, 2), 5, -1), std::invalid_argument);
+  // Valid L on too few bits is still "not applicable", with the bits needed.
+  const TestResult r = universal(random_bits(100, 3), 6, 640);
+  EXPECT_FALSE(r.applicable);
+  EXPECT_EQ(r.min_bits, 641u * 6u);
+}
+
+TEST(NistParameters, BlockFrequencyOfOneBitBlocksCannotFail) {
+  // With M = 1 each block's proportion is 0 or 1, so chi^2 = 4 M sum (pi - 1/2)^2 = N for every sequence.
+  for (unsigned seed : {1u, 2u, 3u}) {
+    std::mt19937 g(seed);
+    std::vector<std::uint8_t> bits(1000);
+    for (auto& b : bits) b = static_cast<std::uint8_t>(g() % 7 == 0);  // heavily biased
+    double chi2 = 0;
+    for (auto b : bits) chi2 += 4.0 * (b - 0.5) * (b - 0.5);
+    EXPECT_EQ(chi2, 1000.0);
+  }
+  EXPECT_TRUE(check_block_frequency(1));
+  EXPECT_FALSE(check_block_frequency(2));
+  EXPECT_THROW(block_frequency(random_bits(1000, 4), 1), std::invalid_argument);
+  EXPECT_THROW(block_frequency(random_bits(1000, 4), -5), std::invalid_argument);
+}
+
+TEST(NistParameters, TemplateAndEntropyRules) {
+  EXPECT_TRUE(check_non_overlapping(40, {}, 8));
+  EXPECT_TRUE(check_non_overlapping(9, {}, 0));
+  const std::vector<std::uint32_t> too_wide = {1u << 9};
+  EXPECT_TRUE(check_non_overlapping(9, too_wide, 8));
+  EXPECT_FALSE(check_non_overlapping(9, {}, 8));
+  EXPECT_TRUE(check_overlapping(9, 8, 5));     // M < m
+  EXPECT_TRUE(check_overlapping(9, 1032, 0));  // no classes
+  EXPECT_TRUE(check_overlapping(9, 1032, 65));
+  EXPECT_FALSE(check_overlapping(9, 1032, 5));
+  EXPECT_FALSE(check_overlapping(2, 10, 2));  // SP800-22 2.8.4's example
+  EXPECT_TRUE(check_approximate_entropy(-1));
+  EXPECT_TRUE(check_serial(1));
+  EXPECT_FALSE(check_serial(16));
+}
+
+TEST(NistParameters, CheckParametersNamesTheFieldOfEveryTest) {
+  Parameters p;
+  for (const NistTest t : all_tests()) EXPECT_FALSE(check_parameters(t, p)) << test_name(t);
+  p.universal_Q = -1;
+  const auto problem = check_parameters(NistTest::Universal, p);
+  ASSERT_TRUE(problem);
+  EXPECT_EQ(problem->field, "universal_Q");
+  EXPECT_EQ(problem->value, -1);
+  EXPECT_FALSE(check_parameters(NistTest::Runs, p));  // Runs has no parameters
+  p = {};
+  p.overlapping_K = 0;
+  EXPECT_EQ(check_parameters(NistTest::OverlappingTemplate, p)->field, "overlapping_K");
+}
