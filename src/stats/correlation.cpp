@@ -4,6 +4,7 @@
 
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/stats/ttest.hpp"
+#include "scale.hpp"
 
 namespace dpdrng::stats {
 
@@ -19,24 +20,24 @@ NoiseMatrix NoiseMatrix::step_major(std::span<const double> data, std::size_t pa
 
 namespace {
 
-// Pearson r over couples produced by `visit(f)` calling f(x, y) for each one. Two passes (means, then centred
-// co-moments) keep the digits that the one-pass Σxy − n x̄ ȳ form loses when the means are far from zero.
+// Pearson r over couples produced by `visit(f)` calling f(x, y) for each one. Three passes: the largest
+// magnitudes (for the exact power-of-two scaling of scale.hpp), the means, then the centred co-moments, which
+// keep the digits that the one-pass Σxy − n x̄ ȳ form loses when the means are far from zero.
 template <class Visit>
 CorrelationResult pooled_pearson(std::string what, Visit&& visit, double alpha) {
   if (!(alpha > 0.0 && alpha < 1.0)) throw InputError("correlation: alpha must lie in (0,1)");
   CorrelationResult res;
   res.what = std::move(what);
   res.alpha = alpha;
-  double sx = 0.0, sy = 0.0;
   bool finite = true, x_varies = false, y_varies = false;
-  double x0 = 0.0, y0 = 0.0;
+  double x0 = 0.0, y0 = 0.0, x_max = 0.0, y_max = 0.0;
   visit([&](double x, double y) {
     if (res.n == 0) x0 = x, y0 = y;
     finite = finite && std::isfinite(x) && std::isfinite(y);
     x_varies = x_varies || x != x0;
     y_varies = y_varies || y != y0;
-    sx += x;
-    sy += y;
+    x_max = std::fmax(x_max, std::fabs(x));
+    y_max = std::fmax(y_max, std::fabs(y));
     ++res.n;
   });
   if (!finite) throw InputError("correlation: the noise contains a value that is not a finite number");
@@ -48,10 +49,16 @@ CorrelationResult pooled_pearson(std::string what, Visit&& visit, double alpha) 
     res.reason = "a constant series: the correlation is undefined";
     return res;
   }
+  const double kx = detail::unit_scale(x_max), ky = detail::unit_scale(y_max);
+  double sx = 0.0, sy = 0.0;
+  visit([&](double x, double y) {
+    sx += kx * x;
+    sy += ky * y;
+  });
   const double mx = sx / static_cast<double>(res.n), my = sy / static_cast<double>(res.n);
   double sxx = 0.0, syy = 0.0, sxy = 0.0;
   visit([&](double x, double y) {
-    const double dx = x - mx, dy = y - my;
+    const double dx = kx * x - mx, dy = ky * y - my;
     sxx += dx * dx;
     syy += dy * dy;
     sxy += dx * dy;

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "dpdrng/common/error.hpp"
+#include "scale.hpp"
 
 namespace dpdrng::stats {
 
@@ -22,10 +23,10 @@ bool all_equal(std::span<const double> x) {
   return std::all_of(x.begin(), x.end(), [&](double v) { return v == x.front(); });
 }
 
-double mean(std::span<const double> x) {
-  double s = 0.0;
-  for (const double v : x) s += v;
-  return s / static_cast<double>(x.size());
+double max_abs(std::span<const double> x) {
+  double m = 0.0;
+  for (const double v : x) m = std::fmax(m, std::fabs(v));
+  return m;
 }
 
 }  // namespace
@@ -34,12 +35,15 @@ std::optional<double> lag1_autocorrelation(std::span<const double> x) {
   // An exactly constant series has no defined r; testing equality first matters because the rounded mean of
   // equal values need not equal them, and the tiny equal residues would give r ≈ (n−1)/n.
   if (x.size() < 2 || all_equal(x)) return std::nullopt;
-  const double m = mean(x);
+  const double k = detail::unit_scale(max_abs(x));
+  double sum = 0.0;
+  for (const double v : x) sum += k * v;
+  const double m = sum / static_cast<double>(x.size());
   double c0 = 0.0, c1 = 0.0;
   for (std::size_t t = 0; t < x.size(); ++t) {
-    const double d = x[t] - m;
+    const double d = k * x[t] - m;
     c0 += d * d;
-    if (t + 1 < x.size()) c1 += d * (x[t + 1] - m);
+    if (t + 1 < x.size()) c1 += d * (k * x[t + 1] - m);
   }
   if (!(c0 > 0.0)) return std::nullopt;
   return c1 / c0;
