@@ -14,6 +14,7 @@
 #include <sstream>
 #include <thread>
 
+#include "dpdrng/cli/checked.hpp"
 #include "dpdrng/cli/registry.hpp"
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/dpd/water.hpp"
@@ -177,7 +178,7 @@ nlohmann::json to_json(const Measured& m) {
 }
 
 std::vector<Measured> measure_table(const BenchDpdArgs& a) {
-  const auto rounds = parse_int_list(a.rounds, "--rounds");
+  const auto rounds = parse_list<int>(a.rounds, "--rounds", {1, kIntMax});
   std::vector<Measured> table;
   for (const auto& p : split(a.pairs)) {
     const dpd::PairMode mode = dpd::parse_pair_mode(p);
@@ -272,7 +273,7 @@ void run_bench_dpd(const BenchDpdArgs& a) {
   if (a.steps_all < 1 || a.steps_cells < 1) throw InputError("--steps-all and --steps-cells must be at least 1");
   if (a.scaling_only && !a.scaling) throw InputError("--scaling-only and --no-scaling exclude each other");
   const auto& tea = rng::find_generator("tea32");
-  for (long long r : parse_int_list(a.rounds, "--rounds"))
+  for (int r : parse_list<int>(a.rounds, "--rounds", {1, kIntMax}))
     if (r < tea.min_rounds || r > tea.max_rounds)
       throw InputError("--rounds: " + std::to_string(r) + " is outside tea32/tea64's " +
                        std::to_string(tea.min_rounds) + ".." + std::to_string(tea.max_rounds));
@@ -323,11 +324,12 @@ const bool registered = register_command(62, [](CLI::App& root) {
   sub->add_option("--rounds", a->rounds, "round counts for tea32/tea64")->capture_default_str();
   sub->add_option("--pairs", a->pairs, "all, cells or all,cells")->capture_default_str();
   sub->add_option("--distribution", a->distribution, "gauss or uniform")->capture_default_str();
-  sub->add_option("--steps-all", a->steps_all, "steps of the 256-bead all-pairs runs")->capture_default_str();
-  sub->add_option("--steps-cells", a->steps_cells, "steps of the cells-mode runs")->capture_default_str();
-  sub->add_option("--particles-cells", a->particles_cells, "beads of the cells-mode system")->capture_default_str();
-  sub->add_option("--threads", a->threads, "OpenMP threads for the table")->capture_default_str();
-  sub->add_option("--repeat", a->repeat, "runs per case (the median is reported); for the scaling, pairs of runs")->capture_default_str();
+  add_integer(*sub, "--steps-all", a->steps_all, "steps of the 256-bead all-pairs runs", {1, kIntMax});
+  add_integer(*sub, "--steps-cells", a->steps_cells, "steps of the cells-mode runs", {1, kIntMax});
+  add_integer(*sub, "--particles-cells", a->particles_cells, "beads of the cells-mode system", {2, 50'000'000});
+  add_integer(*sub, "--threads", a->threads, "OpenMP threads for the table", {1, 1024});
+  add_integer(*sub, "--repeat", a->repeat, "runs per case (the median is reported); for the scaling, pairs of runs",
+              {1, 1000});
   sub->add_flag("--paper", a->paper, "time the paper's full 10 000-step run for tea32(8)/tea32(1)");
   sub->add_flag("!--no-scaling", a->scaling, "skip the 1- vs 2-thread cells comparison");
   sub->add_flag("--scaling-only", a->scaling_only,

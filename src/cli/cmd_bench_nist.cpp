@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "dpdrng/cli/options.hpp"
+#include "dpdrng/cli/checked.hpp"
 #include "dpdrng/cli/registry.hpp"
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/rng/stream.hpp"
@@ -95,8 +96,8 @@ const bool registered = register_command(45, [](CLI::App& root) {
   CLI::App& bench = group(root, "bench", "benchmarks");
   CLI::App* sub = bench.add_subcommand("nist", "CPU and wall time per SP800-22 test (OpenMP across sequences)");
   args->gen.add_to(*sub);
-  sub->add_option("--sequences,-k", args->sequences, "number of sequences")->capture_default_str();
-  sub->add_option("--bits", args->bits, "bits per sequence")->capture_default_str();
+  add_integer(*sub, "--sequences,-k", args->sequences, "number of sequences", {1, 1'000'000});
+  add_integer(*sub, "--bits", args->bits, "bits per sequence (a multiple of 64)", {64, std::uint64_t{1} << 34});
   sub->add_flag("--json", args->json, "machine-readable output");
   sub->callback([args] { run_bench(*args); });
 });

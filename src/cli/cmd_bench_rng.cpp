@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "dpdrng/cli/checked.hpp"
 #include "dpdrng/cli/registry.hpp"
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/rng/stream.hpp"
@@ -368,13 +369,13 @@ const bool registered = register_command(40, [](CLI::App& root) {
       "one number per call (draw<> and fill_noise()). Times are process CPU time (time lent to other processes\n"
       "does not count), medians over repetitions; on a shared machine compare ratios, not absolute times.");
   sub->add_flag("--json", args->json, "machine-readable output with run context and every repetition");
-  sub->add_option("--min-time", args->min_time, "minimum seconds per repetition of each benchmark")
-      ->capture_default_str();
-  sub->add_option("--repetitions", args->repetitions, "repetitions per benchmark (the table shows medians)")
-      ->capture_default_str();
+  add_real(*sub, "--min-time", args->min_time, "minimum seconds per repetition of each benchmark",
+           {0, 3600, true, false});
+  add_integer(*sub, "--repetitions", args->repetitions, "repetitions per benchmark (the table shows medians)",
+              {1, 1000});
   sub->add_option("--filter", args->filter, "regular expression on 'label/mode', e.g. 'tea32\\(8\\)|philox'")
       ->capture_default_str();
-  sub->add_option("--buffer", args->buffer, "outputs per batched call (default fits in L1)")->capture_default_str();
+  add_integer(*sub, "--buffer", args->buffer, "outputs per batched call (default fits in L1)", {16, 1u << 24});
   sub->callback([args] { run_bench(*args); });
 });
 

@@ -10,16 +10,15 @@
 #include "bilayer_cli.hpp"
 #include "csv_out.hpp"
 #include "dpdrng/cli/options.hpp"
+#include "dpdrng/cli/checked.hpp"
 #include "dpdrng/cli/registry.hpp"
 #include "dpdrng/common/error.hpp"
+#include "dpdrng/common/output.hpp"
 
 namespace dpdrng::cli {
 namespace {
 
 void write_series(const std::filesystem::path& dir, const dpd::BilayerResult& r) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw InputError("cannot create " + dir.string() + ": " + ec.message());
   const auto& p = r.profile;
   write_csv(dir / "profile.csv", {"z", "head", "tail", "water"}, {&p.z, &p.head, &p.tail, &p.water});
   const auto& s = r.series;
@@ -31,13 +30,14 @@ void write_series(const std::filesystem::path& dir, const dpd::BilayerResult& r)
   write_csv(dir / "order.csv", {"tail_bond", "p2"}, {&bond, &r.order_by_bond});
 }
 
-std::string pm(const dpd::Stat& s) {
-  std::ostringstream o;
-  o << std::setprecision(6) << s.mean << " ± " << std::setprecision(2) << s.sem;
-  return o.str();
-}
-
 void print_human(const dpd::BilayerResult& r) {
+  // A run that blew up has no observables: "n/a", never a number.
+  auto pm = [na = dpd::blew_up(r.status)](const dpd::Stat& s) {
+    if (na) return std::string("n/a");
+    std::ostringstream o;
+    o << std::setprecision(6) << s.mean << " ± " << std::setprecision(2) << s.sem;
+    return o.str();
+  };
   std::cout << "scene bilayer: " << r.lipids << " H3(T6)2 lipids, " << r.particles << " beads, box " << r.box[0]
             << " x " << r.box[1] << " x " << r.box[2] << ", pairs " << r.pairs << ", " << r.generator << " / "
             << r.seeding << " / " << r.distribution << "\n"
@@ -74,9 +74,9 @@ const bool registered = register_command(41, [](CLI::App& root) {
       "profile.csv (H/T/W densities vs z - z_mid), series.csv and order.csv. `dpdrng simulate --scene bilayer`\n"
       "runs the same scene with the common options (and the warm-up clipped to --equilibrate).");
   auto& c = a->cfg;
-  sub->add_option("--steps", c.steps, "steps in all (warm-up included)")->capture_default_str();
-  sub->add_option("--equilibrate", c.equilibrate, "steps not sampled (warm-up included)")->capture_default_str();
-  sub->add_option("--warmup", c.warmup, "first steps at --dt-warmup")->capture_default_str();
+  add_integer(*sub, "--steps", c.steps, "steps in all (warm-up included)", {1, kInt64Max});
+  add_integer(*sub, "--equilibrate", c.equilibrate, "steps not sampled (warm-up included)", {0, kInt64Max});
+  add_integer(*sub, "--warmup", c.warmup, "first steps at --dt-warmup", {0, kInt64Max});
   add_real(*sub, "--dt", c.dt, "time step after the warm-up");
   add_real(*sub, "--dt-warmup", c.dt_warmup, "time step of the warm-up");
   add_thermostat_options(*sub, c);
@@ -95,6 +95,8 @@ const bool registered = register_command(41, [](CLI::App& root) {
 void run_bilayer_scene(const dpd::BilayerConfig& in, bool json, bool quiet, const std::string& series_dir) {
   dpd::BilayerConfig cfg = in;
   cfg.series = !series_dir.empty();
+  cfg.validate();
+  if (cfg.series) prepare_output_directory(series_dir, "--series");
   dpd::RunHooks hooks;
   if (!quiet && cfg.steps >= 2000)
     hooks.progress = [](std::int64_t step, std::int64_t steps) {

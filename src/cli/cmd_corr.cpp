@@ -3,6 +3,7 @@
 // and the same pair across steps.
 #include <memory>
 
+#include "dpdrng/cli/checked.hpp"
 #include "dpdrng/cli/registry.hpp"
 #include "dpdrng/common/error.hpp"
 #include "stats_cli.hpp"
@@ -20,12 +21,7 @@ struct CorrArgs {
 };
 
 std::vector<std::size_t> positive_list(const std::string& text, const std::string& what) {
-  std::vector<std::size_t> out;
-  for (const long long v : parse_int_list(text, what)) {
-    if (v < 1) throw InputError(what + ": every entry must be at least 1");
-    out.push_back(static_cast<std::size_t>(v));
-  }
-  return out;
+  return parse_list<std::size_t>(text, what, {1, std::numeric_limits<std::size_t>::max()});
 }
 
 std::vector<stats::CorrelationResult> run_checks(const CorrArgs& a, const std::vector<double>& x) {
@@ -92,7 +88,7 @@ const bool registered = register_command(32, [](CLI::App& root) {
       "zeta(p,t) vs zeta(p,t+k) for each k in --lags, each pooled over the whole matrix.\n"
       "A weak hash fed neighbouring inputs can pass chi2 with a perfect histogram and still fail here.\n");
   args->in.add_to(*sub);
-  sub->add_option("--pairs", args->pairs, "read the input as pair noise with this many pairs per step");
+  add_integer(*sub, "--pairs", args->pairs, "read the input as pair noise with this many pairs per step");
   sub->add_option("--layout", args->layout, "step-major (rows = steps) or pair-major (rows = pairs)")
       ->check(CLI::IsMember({"step-major", "pair-major"}))
       ->capture_default_str();

@@ -5,8 +5,10 @@
 #include <memory>
 
 #include "dpdrng/cli/options.hpp"
+#include "dpdrng/cli/checked.hpp"
 #include "dpdrng/cli/registry.hpp"
 #include "dpdrng/common/error.hpp"
+#include "dpdrng/common/output.hpp"
 #include "dpdrng/dpd/decomposition_sweep.hpp"
 
 namespace dpdrng::cli {
@@ -68,6 +70,7 @@ void print_human(const dpd::DecompResult& r) {
 
 void run_study(const DecomposeArgs& a) {
   const dpd::DecompSweep sw = dpd::load_decomp_sweep(a.study);
+  prepare_output_directory(a.out, "--out");
   dpd::SweepProgress progress;
   if (!a.quiet)
     progress = [](std::size_t done, std::size_t total, const dpd::DecompResult& r) {
@@ -118,20 +121,20 @@ const bool registered = register_command(45, [](CLI::App& root) {
   a->gen.add_to(*sub);
   sub->add_option("--seeding", a->seeding, "distance, pair-step, grid, grid:K, canonical")->capture_default_str();
   sub->add_option("--distribution", a->distribution, "gauss or uniform")->capture_default_str();
-  sub->add_option("--particles,-n", c.water.particles, "number of beads")->capture_default_str();
-  sub->add_option("--density", c.water.density, "bead density rho")->capture_default_str();
-  sub->add_option("--dt", c.water.dt, "time step")->capture_default_str();
-  sub->add_option("--steps", c.water.steps, "steps of each run")->capture_default_str();
-  sub->add_option("--equilibrate", c.water.equilibrate, "steps before sampling")->capture_default_str();
-  sub->add_option("--seed", c.noise.seed, "pair-step key word")->capture_default_str();
-  sub->add_option("--init-seed", c.water.init_seed, "seed of the initial configuration")->capture_default_str();
-  sub->add_option("--chi2-every", c.chi2_every, "chi2 on all pairs every k-th production step (0 = off)")
-      ->capture_default_str();
-  sub->add_option("--ttest-pairs", c.ttest_pairs, "pairs (i,i+1) whose series get the lag-1 t-test")
-      ->capture_default_str();
+  add_integer(*sub, "--particles,-n", c.water.particles, "number of beads", {2, 20000});
+  add_real(*sub, "--density", c.water.density, "bead density rho");
+  add_real(*sub, "--dt", c.water.dt, "time step");
+  add_integer(*sub, "--steps", c.water.steps, "steps of each run", {1, kInt64Max});
+  add_integer(*sub, "--equilibrate", c.water.equilibrate, "steps before sampling", {0, kInt64Max});
+  add_integer(*sub, "--seed", c.noise.seed, "pair-step key word");
+  add_integer(*sub, "--init-seed", c.water.init_seed, "seed of the initial configuration");
+  add_integer(*sub, "--chi2-every", c.chi2_every, "chi2 on all pairs every k-th production step (0 = off)",
+              {0, kIntMax});
+  add_integer(*sub, "--ttest-pairs", c.ttest_pairs, "pairs (i,i+1) whose series get the lag-1 t-test",
+              {0, kIntMax});
   sub->add_flag("--no-reference", a->no_reference, "skip the undecomposed run (and the randomness tests)");
-  sub->add_option("--study", a->study, "sweep config (TOML), e.g. study/decomposition.toml");
-  sub->add_option("--out", a->out, "output directory of --study")->capture_default_str();
+  sub->add_option("--study", a->study, "sweep config (TOML), e.g. study/decomposition.toml")->check(non_empty_path());
+  sub->add_option("--out", a->out, "output directory of --study")->check(non_empty_path())->capture_default_str();
   sub->add_flag("--json", a->json, "machine-readable output");
   sub->add_flag("--quiet,-q", a->quiet, "no progress on stderr");
   sub->callback([a] { run_decompose(*a); });

@@ -4,10 +4,13 @@
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
+#include <limits>
 #include <memory>
 #include <vector>
 
 #include "dpdrng/cli/options.hpp"
+#include "dpdrng/cli/checked.hpp"
 #include "dpdrng/cli/registry.hpp"
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/rng/stream.hpp"
@@ -26,8 +29,11 @@ struct GenArgs {
 // Returns false when the reader has gone away (closed pipe): a normal end, not an error.
 bool write_all(const void* data, std::size_t bytes) {
   if (std::fwrite(data, 1, bytes, stdout) == bytes) return true;
-  if (errno == EPIPE) return false;
-  throw std::runtime_error("write to standard output failed");
+  if (errno == EPIPE) {
+    std::clearerr(stdout);
+    return false;
+  }
+  throw OutputError(std::string("standard output: ") + std::strerror(errno));
 }
 
 void run_gen(const GenArgs& a) {
@@ -38,6 +44,9 @@ void run_gen(const GenArgs& a) {
   if (raw && isatty(STDOUT_FILENO)) throw InputError("refusing to write raw binary to a terminal; pipe or redirect it");
   std::signal(SIGPIPE, SIG_IGN);
   const std::uint64_t per_call = rng::words_per_call(spec);
+  if (a.count > std::numeric_limits<std::uint64_t>::max() / per_call)
+    throw InputError("--count " + std::to_string(a.count) + ": " + spec.name + " writes " + std::to_string(per_call) +
+                     " words a call, more than 2^64 - 1 words in all");
   const std::uint64_t total = a.count * per_call;
   std::vector<std::uint64_t> buf(std::size_t{1} << 16);
   std::string text;
@@ -59,7 +68,7 @@ void run_gen(const GenArgs& a) {
     }
     if (!write_all(text.data(), text.size())) return;
   }
-  if (std::fflush(stdout) != 0 && errno != EPIPE) throw std::runtime_error("write to standard output failed");
+  if (std::fflush(stdout) != 0 && errno != EPIPE) throw OutputError(std::string("standard output: ") + std::strerror(errno));
 }
 
 const bool registered = register_command(10, [](CLI::App& root) {
@@ -76,10 +85,8 @@ const bool registered = register_command(10, [](CLI::App& root) {
   args->gen.add_to(*sub);
   sub->add_option("--seeding", args->seeding, "only 'counter' makes a standalone stream")->capture_default_str();
   // CLI11 reads "-1" into an unsigned as 2^64-1: a negative count would run (almost) forever.
-  sub->add_option("--start", args->start, "first counter value (or seed for splitmix64/mt19937)")
-      ->check(CLI::NonNegativeNumber)
-      ->capture_default_str();
-  sub->add_option("--count", args->count, "number of generator calls")->check(CLI::NonNegativeNumber)->required();
+  add_integer(*sub, "--start", args->start, "first counter value (or seed for splitmix64/mt19937)");
+  add_integer(*sub, "--count", args->count, "number of generator calls")->required();
   sub->add_option("--format", args->format, "hex (one 16-digit word a line) or raw")
       ->check(CLI::IsMember({"hex", "raw"}))
       ->capture_default_str();

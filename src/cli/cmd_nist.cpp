@@ -1,8 +1,11 @@
 // dpdrng nist: the whole SP800-22 battery (sts-2.1.2's defaults) on one or many streams of a bit file.
+#include <algorithm>
 #include <iostream>
+#include <limits>
 #include <memory>
 
 #include "cmd_nist_common.hpp"
+#include "dpdrng/cli/checked.hpp"
 #include "dpdrng/cli/registry.hpp"
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/stats/nist/report.hpp"
@@ -13,28 +16,68 @@ namespace nist = stats::nist;
 
 void NistInput::add_to(CLI::App& app) {
   app.add_option("--input,-i", input, "bit file, or - for standard input");
-  app.add_option("--format", format, "ascii ('0'/'1', everything else skipped) or raw (bytes, MSB first)")
+  app.add_option("--format", format,
+                 "ascii ('0'/'1', other text skipped; binary bytes refused) or raw (bytes, MSB first)")
       ->check(CLI::IsMember({"ascii", "raw"}))
       ->capture_default_str();
-  app.add_option("--streams", streams, "number of streams K (default: one stream of all the input)");
-  app.add_option("--stream-bits", stream_bits, "bits per stream N (needed with --streams)");
-  app.add_option("--alpha", alpha, "significance level")->capture_default_str();
+  const IntRange positive{1, std::numeric_limits<std::size_t>::max()};
+  add_integer(app, "--streams", streams, "number of streams K (default: one stream of all the input)", positive);
+  add_integer(app, "--stream-bits", stream_bits, "bits per stream N (needed with --streams)", positive);
+  add_real(app, "--alpha", alpha, "significance level", {0, 1, true, true});
   app.add_flag("--tsv", tsv, "one line per P-value: stream, test, variant, p");
   app.add_flag("--json", json, "machine-readable output");
 }
 
-std::vector<nist::BitSequence> NistInput::load() const {
+void NistInput::inherit(const CLI::App& parent, const CLI::App& sub) {
+  static const std::vector<std::string> shared = {"--input", "--format", "--streams", "--stream-bits",
+                                                  "--alpha", "--tsv",    "--json"};
+  for (const CLI::Option* o : parent.get_options())
+    if (o->count() > 0 && std::find(shared.begin(), shared.end(), o->get_name()) == shared.end())
+      throw InputError(o->get_name() + " is an option of the whole battery, not of 'nist " + sub.get_name() +
+                       "' (see dpdrng nist " + sub.get_name() + " --help)");
+  for (const std::string& name : shared) {
+    const CLI::Option* given = parent.get_option(name);
+    if (given->count() == 0) continue;
+    if (sub.get_option(name)->count() > 0)
+      throw InputError(name + " is given both before and after '" + sub.get_name() + "': give it once");
+    if (name == "--input") input = given->as<std::string>();
+    if (name == "--format") format = given->as<std::string>();
+    if (name == "--streams") streams = given->as<std::size_t>();
+    if (name == "--stream-bits") stream_bits = given->as<std::size_t>();
+    if (name == "--alpha") alpha = given->as<double>();
+    if (name == "--tsv") tsv = true;
+    if (name == "--json") json = true;
+  }
+}
+
+void NistInput::check() const {
   if (input.empty()) throw InputError("--input is required (a file, or - for standard input)");
-  if (!(alpha > 0 && alpha < 1)) throw InputError("--alpha must be within (0, 1)");
   if (tsv && json) throw InputError("choose one of --tsv and --json");
-  if ((streams == 0) != (stream_bits == 0)) throw InputError("--streams and --stream-bits go together");
+  if ((streams == 0) != (stream_bits == 0))
+    throw InputError(streams == 0 ? "--stream-bits needs --streams (how many streams of that many bits)"
+                                  : "--streams needs --stream-bits (how many bits a stream holds)");
+  if (streams != 0 && stream_bits > std::numeric_limits<std::size_t>::max() / streams)
+    throw InputError("--streams x --stream-bits is more bits than this machine can address");
+}
+
+std::vector<nist::BitSequence> NistInput::load() const {
+  check();
   const nist::BitFormat f = nist::parse_bit_format(format);
   if (streams == 0) {
     nist::BitSequence all = nist::read_bits(input, f);
-    if (all.empty()) throw InputError("no bits in the input");
+    if (all.empty())
+      throw InputError(source() + ": no bits in the input" +
+                       (f == nist::BitFormat::ascii ? " (no '0' or '1' characters)" : " (empty)"));
     return {std::move(all)};
   }
   return nist::split_streams(nist::read_bits(input, f, streams * stream_bits), streams, stream_bits);
+}
+
+void check_nist_parameters(const std::vector<nist::Test>& tests, const nist::Parameters& p,
+                           const std::function<std::string(const std::string& field)>& flag) {
+  for (const nist::Test t : tests)
+    if (const auto problem = nist::check_parameters(t, p))
+      throw InputError(flag(problem->field) + " " + std::to_string(problem->value) + ": " + problem->reason);
 }
 
 void print_nist(const NistInput& in, const std::vector<std::vector<nist::TestResult>>& results,
@@ -109,6 +152,12 @@ nlohmann::json parameters_json(const nist::Parameters& p) {
 
 void run_nist(const NistArgs& a) {
   const auto tests = parse_tests(a.tests);
+  a.in.check();
+  // The battery's flags are the Parameters fields spelt with dashes (--universal-L for universal_L).
+  check_nist_parameters(tests.empty() ? nist::all_tests() : tests, a.p, [](std::string field) {
+    std::replace(field.begin(), field.end(), '_', '-');
+    return "--" + field;
+  });
   const auto seqs = a.in.load();
   const auto results = nist::run_battery(seqs, a.p, tests);
   print_nist(a.in, results, parameters_json(a.p));
@@ -122,19 +171,15 @@ const bool registered = register_command(35, [](CLI::App& root) {
       "the reference's finalAnalysisReport. Streams: stream i = input bits [iN, (i+1)N).");
   args->in.add_to(*sub);
   sub->add_option("--tests", args->tests, "comma-separated subset, reference or subcommand names (default: all)");
-  sub->add_option("--block-frequency-M", args->p.block_frequency_M, "BlockFrequency block length")->capture_default_str();
-  sub->add_option("--non-overlapping-m", args->p.non_overlapping_m, "NonOverlappingTemplate template length")
-      ->capture_default_str();
-  sub->add_option("--overlapping-m", args->p.overlapping_m, "OverlappingTemplate template length")->capture_default_str();
-  sub->add_option("--universal-L", args->p.universal_L, "Universal block length (0: from n, as the reference)")
-      ->capture_default_str();
-  sub->add_option("--universal-Q", args->p.universal_Q, "Universal initialisation blocks (0: 10*2^L)")
-      ->capture_default_str();
-  sub->add_option("--approximate-entropy-m", args->p.approximate_entropy_m, "ApproximateEntropy block length")
-      ->capture_default_str();
-  sub->add_option("--serial-m", args->p.serial_m, "Serial block length")->capture_default_str();
-  sub->add_option("--linear-complexity-M", args->p.linear_complexity_M, "LinearComplexity block length")
-      ->capture_default_str();
+  auto& p = args->p;
+  add_integer(*sub, "--block-frequency-M", p.block_frequency_M, "BlockFrequency block length");
+  add_integer(*sub, "--non-overlapping-m", p.non_overlapping_m, "NonOverlappingTemplate template length");
+  add_integer(*sub, "--overlapping-m", p.overlapping_m, "OverlappingTemplate template length");
+  add_integer(*sub, "--universal-L", p.universal_L, "Universal block length (0: from n, as the reference)");
+  add_integer(*sub, "--universal-Q", p.universal_Q, "Universal initialisation blocks (0: 10*2^L)");
+  add_integer(*sub, "--approximate-entropy-m", p.approximate_entropy_m, "ApproximateEntropy block length");
+  add_integer(*sub, "--serial-m", p.serial_m, "Serial block length");
+  add_integer(*sub, "--linear-complexity-M", p.linear_complexity_M, "LinearComplexity block length");
   sub->callback([args, sub] {
     if (!sub->get_subcommands().empty()) return;  // a per-test subcommand ran instead
     run_nist(*args);

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "cmd_nist_common.hpp"
+#include "dpdrng/cli/checked.hpp"
 #include "dpdrng/cli/registry.hpp"
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/stats/nist/report.hpp"
@@ -18,13 +19,8 @@ namespace nist = stats::nist;
 struct TestArgs {
   NistInput in;
   nist::Test test{};
-  int block_length = 0;     // M (0: the test's default)
-  int template_length = 0;  // m
-  int K = 5;
-  int blocks = 8;
-  int universal_Q = 0;
+  nist::Parameters p;
   std::vector<std::string> templates;
-  std::vector<std::uint32_t> parsed_templates;  // filled before the parallel loop: no throwing inside it
 };
 
 std::uint32_t parse_template(const std::string& bits, int m) {
@@ -35,21 +31,16 @@ std::uint32_t parse_template(const std::string& bits, int m) {
   return v;
 }
 
-nist::TestResult run_one(const TestArgs& a, const nist::BitSequence& s) {
-  auto or_default = [](int v, int d) { return v == 0 ? d : v; };
-  switch (a.test) {
-    case nist::Test::BlockFrequency: return nist::block_frequency(s, or_default(a.block_length, 128));
-    case nist::Test::NonOverlappingTemplate: {
-      return nist::non_overlapping_template(s, or_default(a.template_length, 9), a.parsed_templates, a.blocks);
-    }
-    case nist::Test::OverlappingTemplate:
-      return nist::overlapping_template(s, or_default(a.template_length, 9), or_default(a.block_length, 1032), a.K);
-    case nist::Test::Universal: return nist::universal(s, a.block_length, a.universal_Q);
-    case nist::Test::ApproximateEntropy: return nist::approximate_entropy(s, or_default(a.template_length, 10));
-    case nist::Test::Serial: return nist::serial(s, or_default(a.template_length, 16));
-    case nist::Test::LinearComplexity: return nist::linear_complexity(s, or_default(a.block_length, 500));
-    default: return nist::run_test(a.test, s);
-  }
+// The per-test flag that sets each Parameters field.
+std::string flag_of(const std::string& field) {
+  if (field == "non_overlapping_blocks") return "--blocks";
+  if (field == "non_overlapping_templates") return "--template";
+  if (field == "overlapping_K") return "--K";
+  if (field == "universal_Q") return "--init-blocks";
+  if (field == "block_frequency_M" || field == "overlapping_M" || field == "universal_L" ||
+      field == "linear_complexity_M")
+    return "--block-length";
+  return "--template-length";
 }
 
 void print_human(const std::vector<std::vector<nist::TestResult>>& results) {
@@ -67,19 +58,27 @@ void print_human(const std::vector<std::vector<nist::TestResult>>& results) {
 }
 
 void run(TestArgs& a) {
-  const int m = a.template_length == 0 ? 9 : a.template_length;
-  a.parsed_templates.clear();
-  for (const auto& b : a.templates) a.parsed_templates.push_back(parse_template(b, m));
+  a.in.check();
+  if (a.p.non_overlapping_m >= 2 && a.p.non_overlapping_m <= 21) {
+    a.p.non_overlapping_templates.clear();
+    for (const auto& b : a.templates) a.p.non_overlapping_templates.push_back(parse_template(b, a.p.non_overlapping_m));
+  }
+  check_nist_parameters({a.test}, a.p, flag_of);
   const auto seqs = a.in.load();
   std::vector<std::vector<nist::TestResult>> results(seqs.size());
   const long count = static_cast<long>(seqs.size());
 #pragma omp parallel for schedule(dynamic, 1)
-  for (long i = 0; i < count; ++i) results[i] = {run_one(a, seqs[i])};
+  for (long i = 0; i < count; ++i) results[i] = {nist::run_test(a.test, seqs[i], a.p)};
   if (a.in.tsv || a.in.json || seqs.size() > 1) {
     if (!a.in.tsv && !a.in.json) print_human(results);
+    const auto& p = a.p;
     print_nist(a.in, results,
-               {{"block_length", a.block_length}, {"template_length", a.template_length}, {"K", a.K},
-                {"blocks", a.blocks}, {"universal_Q", a.universal_Q}, {"templates", a.templates}});
+               {{"block_frequency_M", p.block_frequency_M}, {"non_overlapping_m", p.non_overlapping_m},
+                {"non_overlapping_blocks", p.non_overlapping_blocks}, {"templates", a.templates},
+                {"overlapping_m", p.overlapping_m}, {"overlapping_M", p.overlapping_M},
+                {"overlapping_K", p.overlapping_K}, {"universal_L", p.universal_L}, {"universal_Q", p.universal_Q},
+                {"approximate_entropy_m", p.approximate_entropy_m}, {"serial_m", p.serial_m},
+                {"linear_complexity_M", p.linear_complexity_M}});
     return;
   }
   print_human(results);
@@ -93,37 +92,41 @@ void add_test(CLI::App& nist_app, nist::Test t) {
   sub->footer("One test with its own parameters; several streams also get the second-level assessment.");
   a->in.add_to(*sub);
   using T = nist::Test;
+  auto& p = a->p;
   switch (t) {
     case T::BlockFrequency:
-      sub->add_option("--block-length", a->block_length, "M, bits per block (default 128)");
+      add_integer(*sub, "--block-length", p.block_frequency_M, "M, bits per block");
       break;
     case T::NonOverlappingTemplate:
-      sub->add_option("--template-length", a->template_length, "m (default 9)");
+      add_integer(*sub, "--template-length", p.non_overlapping_m, "m");
       sub->add_option("--template", a->templates, "template bits, e.g. 000000001 (default: all aperiodic ones)");
-      sub->add_option("--blocks", a->blocks, "N, number of blocks")->capture_default_str();
+      add_integer(*sub, "--blocks", p.non_overlapping_blocks, "N, number of blocks");
       break;
     case T::OverlappingTemplate:
-      sub->add_option("--template-length", a->template_length, "m, length of the all-ones template (default 9)");
-      sub->add_option("--block-length", a->block_length, "M (default 1032)");
-      sub->add_option("--K", a->K, "degrees of freedom (classes 0..K)")->capture_default_str();
+      add_integer(*sub, "--template-length", p.overlapping_m, "m, length of the all-ones template");
+      add_integer(*sub, "--block-length", p.overlapping_M, "M");
+      add_integer(*sub, "--K", p.overlapping_K, "degrees of freedom (classes 0..K)");
       break;
     case T::Universal:
-      sub->add_option("--block-length", a->block_length, "L (default: from n, as the reference)");
-      sub->add_option("--init-blocks", a->universal_Q, "Q (default 10*2^L)");
+      add_integer(*sub, "--block-length", p.universal_L, "L (0: from n, as the reference)");
+      add_integer(*sub, "--init-blocks", p.universal_Q, "Q (0: 10*2^L)");
       break;
     case T::ApproximateEntropy:
-      sub->add_option("--template-length", a->template_length, "m, block length (default 10)");
+      add_integer(*sub, "--template-length", p.approximate_entropy_m, "m, block length");
       break;
     case T::Serial:
-      sub->add_option("--template-length", a->template_length, "m, block length (default 16)");
+      add_integer(*sub, "--template-length", p.serial_m, "m, block length");
       break;
     case T::LinearComplexity:
-      sub->add_option("--block-length", a->block_length, "M (default 500)");
+      add_integer(*sub, "--block-length", p.linear_complexity_M, "M");
       break;
     default:
       break;
   }
-  sub->callback([a] { run(*a); });
+  sub->callback([a, sub] {
+    a->in.inherit(*sub->get_parent(), *sub);
+    run(*a);
+  });
 }
 
 const bool registered = register_command(36, [](CLI::App& root) {

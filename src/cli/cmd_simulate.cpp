@@ -6,8 +6,10 @@
 #include <memory>
 
 #include "dpdrng/cli/options.hpp"
+#include "dpdrng/cli/checked.hpp"
 #include "dpdrng/cli/registry.hpp"
 #include "dpdrng/common/error.hpp"
+#include "dpdrng/common/output.hpp"
 #include "dpdrng/dpd/water.hpp"
 #include "bilayer_cli.hpp"
 #include "csv_out.hpp"
@@ -23,9 +25,6 @@ struct SimulateArgs {
 };
 
 void write_series(const std::filesystem::path& dir, const dpd::RunResult& r) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw InputError("cannot create " + dir.string() + ": " + ec.message());
   std::vector<double> step(r.series.step.begin(), r.series.step.end());
   write_csv(dir / "series.csv", {"step", "temperature", "pressure", "pressure_conservative", "px", "py", "pz"},
             {&step, &r.series.temperature, &r.series.pressure, &r.series.pressure_conservative, &r.series.px,
@@ -38,11 +37,19 @@ void write_series(const std::filesystem::path& dir, const dpd::RunResult& r) {
 }
 
 void print_human(const dpd::RunResult& r) {
-  auto pm = [](const dpd::Stat& s) {
+  // A run that blew up has no observables: "n/a", never a number.
+  const bool na = dpd::blew_up(r.status);
+  auto pm = [na](const dpd::Stat& s) {
+    if (na) return std::string("n/a");
     std::ostringstream o;
     o << std::setprecision(6) << s.mean << " ± " << std::setprecision(2) << s.sem << " (std " << std::setprecision(4)
       << s.std << ")";
     return o.str();
+  };
+  auto num = [na](double v) {
+    std::ostringstream o;
+    o << v;
+    return na ? std::string("n/a") : o.str();
   };
   std::cout << "scene water: " << r.particles << " beads, box " << r.box_length << ", pairs " << r.pairs << ", "
             << r.generator << " / " << r.seeding << " / " << r.distribution
@@ -51,9 +58,12 @@ void print_human(const dpd::RunResult& r) {
             << "temperature k_BT       " << pm(r.temperature) << "\n"
             << "pressure               " << pm(r.pressure) << "\n"
             << "pressure (conservative)" << " " << pm(r.pressure_conservative) << "\n"
-            << "diffusion coefficient  " << r.msd.diffusion << " ± " << r.msd.diffusion_sem << "\n"
-            << "velocity PDF error     " << r.velocity_pdf.error_rate_kT_mean << " (vs MB at k_BT), "
-            << r.velocity_pdf.error_rate_measured_mean << " (at measured T)\n"
+            << "diffusion coefficient  " << (na ? "n/a" : num(r.msd.diffusion) + " ± " + num(r.msd.diffusion_sem)) << "\n"
+            << "velocity PDF error     "
+            << (na ? "n/a"
+                   : num(r.velocity_pdf.error_rate_kT_mean) + " (vs MB at k_BT), " +
+                         num(r.velocity_pdf.error_rate_measured_mean) + " (at measured T)")
+            << "\n"
             << "momentum drift / bead  " << r.momentum_drift << "\n"
             << "time                   " << r.timings.total_s << " s, " << r.timings.particle_steps_per_s
             << " particle-steps/s, " << r.timings.threads << " thread(s)\n"
@@ -67,6 +77,8 @@ void run_simulate(SimulateArgs& a) {
   a.run.apply(cfg);
   cfg.integrator = dpd::parse_integrator(a.integrator);
   cfg.series = !a.run.series_dir.empty();
+  cfg.validate();
+  if (cfg.series) prepare_output_directory(a.run.series_dir, "--series");
   dpd::RunHooks hooks;
   const bool long_run = double(cfg.particles) * double(cfg.steps) > 2e7;
   if (!a.run.quiet && long_run)
@@ -94,7 +106,7 @@ const bool registered = register_command(40, [](CLI::App& root) {
       "'unstable at step k: reason'.");
   auto& c = a->cfg;
   sub->add_option("--scene", a->scene, "scene: water or bilayer (issue 7's membrane)")->capture_default_str();
-  sub->add_option("--particles,-n", c.particles, "number of beads")->capture_default_str();
+  add_integer(*sub, "--particles,-n", c.particles, "number of beads", {2, 50'000'000});
   add_real(*sub, "--density", c.density, "bead density rho");
   add_real(*sub, "--a", c.a, "conservative repulsion a_ij");
   add_real(*sub, "--rc", c.rc, "cut-off radius");
@@ -103,8 +115,8 @@ const bool registered = register_command(40, [](CLI::App& root) {
   sub->add_option("--integrator", a->integrator, "mvv (Groot-Warren, --lambda) or shardlow (S1 splitting; water only)")
       ->check(CLI::IsMember({"mvv", "shardlow"}))
       ->capture_default_str();
-  sub->add_option("--steps", c.steps, "steps")->capture_default_str();
-  sub->add_option("--equilibrate", c.equilibrate, "equilibration steps (not sampled)")->capture_default_str();
+  add_integer(*sub, "--steps", c.steps, "steps", {1, kInt64Max});
+  add_integer(*sub, "--equilibrate", c.equilibrate, "equilibration steps (not sampled)", {0, kInt64Max});
   a->run.add_to(*sub, c,
                 {"all (every pair, as the paper) or cells (linked cells, sorted every step)",
                  "sampling interval of the distributions",

@@ -4,8 +4,10 @@
 #include <memory>
 #include <thread>
 
+#include "dpdrng/cli/checked.hpp"
 #include "dpdrng/cli/registry.hpp"
 #include "dpdrng/common/error.hpp"
+#include "dpdrng/common/output.hpp"
 #include "dpdrng/study/measure.hpp"
 #include "dpdrng/study/report.hpp"
 #include "dpdrng/study/runner.hpp"
@@ -25,11 +27,12 @@ void run(const RunArgs& a) {
   // Everything that can be wrong with the input is checked before the first byte is written.
   const StudyConfig config = load_config(a.config);
   validate_scene(config);
-  RunOptions o;
+  study::RunOptions o;
   o.shard = parse_shard(a.shard);
   o.threads = a.threads > 0 ? a.threads : std::max(1u, std::thread::hardware_concurrency());
   o.progress = &std::cerr;
   Store store(a.out.empty() ? fs::path("results") / config.name : fs::path(a.out));
+  prepare_output_directory(store.dir(), "--out");
   store.open_for(config);
   std::cerr << "[study] " << config.name << ": " << select_shard(enumerate_cells(config), o.shard).size()
             << " cells in shard " << o.shard.index << "/" << o.shard.count << ", " << o.threads << " threads, into "
@@ -47,6 +50,7 @@ void merge(const std::vector<std::string>& dirs, const std::string& out_dir) {
   Store first(dirs.front());
   const StudyConfig config = first.stored_config();
   Store out(out_dir.empty() ? fs::path(dirs.front()) : fs::path(out_dir));
+  prepare_output_directory(out.dir(), "--out");
   // Checks every source before copying anything, so a wrong directory leaves the output untouched.
   for (const auto& d : dirs) {
     const StudyConfig c = Store(d).stored_config();
@@ -70,7 +74,13 @@ void report(const std::string& dir, bool charts) {
   ReportOptions o;
   o.charts = charts;
   o.log = &std::cerr;
-  const auto cells = store.load_all();
+  std::vector<UnreadableCell> unreadable;
+  const auto cells = store.load_all(&unreadable);
+  for (const auto& u : unreadable) {
+    std::cerr << "[report] warning: " << u.file.string() << " is unreadable (" << u.reason
+              << "): left out of the report; `study run` computes it again\n";
+    o.unreadable.push_back(u.file.filename().string());
+  }
   const fs::path md = write_report(config, cells, store.dir(), o);
   std::cout << md.string() << "\n";
 }
@@ -84,17 +94,17 @@ const bool registered = register_command(60, [](CLI::App& root) {
   auto ra = std::make_shared<RunArgs>();
   CLI::App* r = g.add_subcommand("run", "run the cells of a study config (resumes: finished cells are kept)");
   r->add_option("config", ra->config, "study config (TOML), e.g. study/okada2021.toml")->required();
-  r->add_option("--out,-o", ra->out, "results directory (default results/<study name>)");
+  r->add_option("--out,-o", ra->out, "results directory (default results/<study name>)")->check(non_empty_path());
   r->add_option("--shard", ra->shard, "run only shard k of N (1-based, round-robin over the cells), e.g. 3/16")
       ->capture_default_str();
-  r->add_option("--threads,-t", ra->threads, "cells run side by side (0 = all cores)")->capture_default_str();
+  add_integer(*r, "--threads,-t", ra->threads, "cells run side by side (0 = all cores)", {0, 1024});
   r->callback([ra] { run(*ra); });
 
   auto dirs = std::make_shared<std::vector<std::string>>();
   auto out = std::make_shared<std::string>();
   CLI::App* m = g.add_subcommand("merge", "combine the cells of several result directories (shards) into one");
   m->add_option("dirs", *dirs, "result directories made with the same config")->required();
-  m->add_option("--out,-o", *out, "target directory (default: the first one)");
+  m->add_option("--out,-o", *out, "target directory (default: the first one)")->check(non_empty_path());
   m->callback([dirs, out] { merge(*dirs, *out); });
 
   auto dir = std::make_shared<std::string>();

@@ -4,12 +4,49 @@
 #include <algorithm>
 #include <iostream>
 
+#include "dpdrng/cli/checked.hpp"
 #include "dpdrng/cli/registry.hpp"
 #include "dpdrng/common/error.hpp"
+#include "dpdrng/common/output.hpp"
 
 namespace dpdrng::cli {
 std::vector<std::pair<int, Attach>>& commands();
+
+namespace {
+
+// Help and version text go to standard output like any result: a lost one is a write error.
+int exit_with_text(CLI::App& app, const CLI::ParseError& e) {
+  const int code = app.exit(e);
+  try {
+    flush_standard_output();
+  } catch (const OutputError& err) {
+    std::cerr << "dpdrng: write error: " << err.what() << "\n";
+    return kExitInternal;
+  }
+  return code;
 }
+
+// The deepest subcommand the parser entered (the root if none).
+CLI::App* deepest(CLI::App* app) {
+  for (CLI::App* sub : app->get_subcommands()) return deepest(sub);
+  return app;
+}
+
+// CLI11 reports an unknown subcommand as "A subcommand is required"; say which word was not understood and
+// which were expected.
+std::string subcommand_message(CLI::App& root) {
+  CLI::App* at = deepest(&root);
+  std::string names;
+  for (const CLI::App* sub : at->get_subcommands([](CLI::App*) { return true; }))
+    names += (names.empty() ? "" : ", ") + sub->get_name();
+  const std::string path = at == &root ? "dpdrng" : "dpdrng " + at->get_name();
+  const std::vector<std::string> extra = at->remaining();
+  if (!extra.empty()) return "unknown command '" + extra.front() + "' for " + path + " (known: " + names + ")";
+  return path + " needs a command (one of: " + names + ")";
+}
+
+}  // namespace
+}  // namespace dpdrng::cli
 
 int main(int argc, char** argv) {
   // GSL's default handler aborts; every GSL call in the library checks its status instead.
@@ -22,21 +59,36 @@ int main(int argc, char** argv) {
   app.fallthrough(false);
   auto& list = dpdrng::cli::commands();
   std::stable_sort(list.begin(), list.end(), [](auto& a, auto& b) { return a.first < b.first; });
-  for (auto& [order, attach] : list) attach(app);
+  try {
+    for (auto& [order, attach] : list) attach(app);
+    dpdrng::cli::require_checked_numbers(app);
+  } catch (const std::exception& e) {
+    std::cerr << "dpdrng: internal error: " << e.what() << "\n";
+    return dpdrng::kExitInternal;
+  }
   try {
     app.parse(argc, argv);
+    dpdrng::flush_standard_output();
   } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
+    return dpdrng::cli::exit_with_text(app, e);
   } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
+    return dpdrng::cli::exit_with_text(app, e);
   } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
+    return dpdrng::cli::exit_with_text(app, e);
+  } catch (const CLI::RequiredError& e) {
+    const std::string what = e.what();
+    std::cerr << "dpdrng: " << (what.rfind("A subcommand", 0) == 0 ? dpdrng::cli::subcommand_message(app) : what)
+              << " (see --help)\n";
+    return dpdrng::kExitBadInput;
   } catch (const CLI::ParseError& e) {
     std::cerr << "dpdrng: " << e.what() << " (see --help)\n";
     return dpdrng::kExitBadInput;
   } catch (const dpdrng::InputError& e) {
     std::cerr << "dpdrng: " << e.what() << "\n";
     return dpdrng::kExitBadInput;
+  } catch (const dpdrng::OutputError& e) {
+    std::cerr << "dpdrng: write error: " << e.what() << "\n";
+    return dpdrng::kExitInternal;
   } catch (const std::exception& e) {
     std::cerr << "dpdrng: internal error: " << e.what() << "\n";
     return dpdrng::kExitInternal;

@@ -1,7 +1,6 @@
 #include "dpdrng/cli/registry.hpp"
 
 #include <algorithm>
-#include <sstream>
 #include <vector>
 
 #include "dpdrng/common/error.hpp"
@@ -24,25 +23,6 @@ CLI::App& group(CLI::App& root, const std::string& name, const std::string& desc
   CLI::App* sub = root.add_subcommand(name, description);
   sub->require_subcommand(1);
   return *sub;
-}
-
-std::vector<long long> parse_int_list(const std::string& text, const std::string& what) {
-  std::vector<long long> out;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ',')) {
-    std::size_t used = 0;
-    long long v = 0;
-    try {
-      v = std::stoll(item, &used, 0);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != item.size()) throw InputError(what + ": '" + item + "' is not an integer");
-    out.push_back(v);
-  }
-  if (out.empty()) throw InputError(what + ": empty list");
-  return out;
 }
 
 }  // namespace dpdrng::cli

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "dpdrng/cli/options.hpp"
 #include "dpdrng/stats/correlation.hpp"
 #include "dpdrng/stats/input.hpp"
 #include "dpdrng/stats/pass_fraction.hpp"
@@ -27,9 +28,7 @@ struct StatsInput {
                    "--format raw); f64 = raw little-endian doubles; text = one number a line")
         ->required()
         ->check(CLI::IsMember({"u64", "f64", "text"}));
-    app.add_option("--alpha", alpha, "significance level of each test")
-        ->check(CLI::Range(0.0, 1.0).description("in (0,1)"))
-        ->capture_default_str();
+    add_real(app, "--alpha", alpha, "significance level of each test", {0, 1, true, true});
     app.add_flag("--json", json, "machine-readable output");
   }
   std::vector<double> read() const { return stats::read_values(input, stats::parse_input_format(format)); }
@@ -41,12 +40,11 @@ struct ChunkOptions {
   double confidence = 0.99;
 
   void add_to(CLI::App& app) {
-    app.add_option("--per", per, "split the input into chunks of N values, test each, report the pass fraction")
-        ->check(CLI::PositiveNumber);
-    app.add_option("--confidence", confidence,
-                   "level of the pass fraction's Clopper-Pearson interval (1 - level: the binomial test's level)")
-        ->check(CLI::Range(0.0, 1.0))
-        ->capture_default_str();
+    add_integer(app, "--per", per, "split the input into chunks of N values, test each, report the pass fraction",
+                {1, std::numeric_limits<std::size_t>::max()});
+    add_real(app, "--confidence", confidence,
+             "level of the pass fraction's Clopper-Pearson interval (1 - level: the binomial test's level)",
+             {0, 1, true, true});
   }
 };
 

@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "dpdrng/common/numbers.hpp"
+
 namespace dpdrng::study {
 namespace {
 
@@ -73,7 +75,7 @@ CellResult read_cell(hid_t g) {
   c.replica = static_cast<int>(get<std::int64_t>(a, "cell.replica"));
   c.reference = get<std::int64_t>(a, "cell.reference") != 0;
   c.nist = get<std::int64_t>(a, "cell.nist") != 0;
-  c.seed = std::stoull(get<std::string>(a, "cell.seed"));
+  c.seed = parse_number<std::uint64_t>(get<std::string>(a, "cell.seed"), "cell.seed");
   r.status = get<std::string>(a, "status");
   r.unstable_step = static_cast<long>(get<std::int64_t>(a, "unstable_step"));
   r.reason = get<std::string>(a, "reason");

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "dpdrng/common/error.hpp"
+#include "dpdrng/common/numbers.hpp"
 #include "dpdrng/rng/registry.hpp"
 #include "dpdrng/rng/splitmix.hpp"
 
@@ -66,11 +67,12 @@ std::vector<Cell> enumerate_cells(const StudyConfig& config) {
 }
 
 Shard parse_shard(const std::string& text) {
+  const std::size_t slash = text.find('/');
+  if (slash == std::string::npos) throw InputError("--shard: " + quote_input(text) + " is not k/N (e.g. 3/16)");
   Shard s;
-  int used = 0;
-  if (std::sscanf(text.c_str(), "%d/%d%n", &s.index, &s.count, &used) != 2 || used != int(text.size()) ||
-      s.count < 1 || s.index < 1 || s.index > s.count)
-    throw InputError("--shard: '" + text + "' is not k/N with 1 <= k <= N");
+  s.count = parse_number<int>(std::string_view(text).substr(slash + 1), "--shard: N", {1, 1'000'000});
+  s.index = parse_number<int>(std::string_view(text).substr(0, slash), "--shard: k",
+                              {1, static_cast<std::uint64_t>(s.count)});
   return s;
 }
 

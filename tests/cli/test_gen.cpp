@@ -66,7 +66,8 @@ TEST(CliGen, HexEqualsLibraryStreamForEveryGenerator) {
 }
 
 TEST(CliGen, KeyOptionReachesTheHash) {
-  const Result r = run("gen -g tea32 -r 32 --key 0x01234567,0x12345678,0x23456789,0x3456789A --start 0 --count 1");
+  // The key 0x01234567, 0x12345678, 0x23456789, 0x3456789A, in decimal (numbers on the command line are decimal).
+  const Result r = run("gen -g tea32 -r 32 --key 19088743,305419896,591751049,878082202 --start 0 --count 1");
   ASSERT_EQ(r.code, 0) << r.err;
   // Bouncy Castle's TEA vector for this key and a zero block: 34e943b0 900f5dcb (x0', x1').
   EXPECT_EQ(r.out, "900f5dcb34e943b0\n");

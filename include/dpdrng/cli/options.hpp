@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "dpdrng/cli/checked.hpp"
 #include "dpdrng/dpd/config.hpp"
 #include "dpdrng/rng/registry.hpp"
 
@@ -12,17 +13,10 @@ struct GeneratorOptions {
   std::string name = "tea32";
   int rounds = 0;
   std::string key = "3,4,5,6";
-  CLI::Option* rounds_option = nullptr;  // set by add_to(): tells an explicit --rounds 0 from the default
 
   void add_to(CLI::App& app);
   rng::GeneratorSpec spec() const;  // validated; throws InputError
 };
-
-// Refuses NaN and ±inf at parse time, naming the option: a config's own checks cover only the fields that
-// matter for the mode chosen, but a non-finite number is always a typo.
-const CLI::Validator& finite_number();
-// A real-valued option with the finite check and its default shown in --help.
-CLI::Option* add_real(CLI::App& app, const std::string& name, double& value, const std::string& help);
 
 // What `simulate` and `simulate-bilayer` both take besides the scene's physics.
 struct RunOptions {

@@ -15,7 +15,4 @@ bool register_command(int order, Attach attach);
 // Nested groups (`bench rng`, `nist runs`, `study run`) share a parent created by whichever file comes first.
 CLI::App& group(CLI::App& root, const std::string& name, const std::string& description);
 
-// Parses "a,b,c" lists of unsigned integers and rejects anything else with an InputError.
-std::vector<long long> parse_int_list(const std::string& text, const std::string& what);
-
 }  // namespace dpdrng::cli
