@@ -77,6 +77,9 @@ void BilayerConfig::validate() const {
   if (!(lambda >= 0 && lambda <= 1)) bad("lambda", std::to_string(lambda) + " (0..1)");
   positive(dt, "dt");
   positive(dt_warmup, "dt_warmup");
+  const double longest = std::max({box[0], box[1], box[2]});
+  check_step_resolves(dt, kT, longest, "dt");
+  check_step_resolves(dt_warmup, kT, longest, "dt_warmup");
   if (steps < 1) bad("steps", std::to_string(steps) + " (at least 1)");
   if (warmup < 0 || warmup > steps) bad("warmup", std::to_string(warmup) + " (0..steps)");
   if (equilibrate < warmup || equilibrate >= steps)

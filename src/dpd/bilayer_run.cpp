@@ -257,10 +257,12 @@ nlohmann::json to_json(const BilayerResult& r, bool arrays) {
   for (int a = 0; a < 3; ++a) j["pressure_diag"].push_back(to_json(r.pressure_diag[a]));
   j["timings"] = timings_json(r.timings);
   j["timings"]["bonded_s"] = r.bonded_s;
-  if (!arrays) return j;
-  j["order_by_bond"] = r.order_by_bond;
-  j["profile"] = {{"z", r.profile.z}, {"head", r.profile.head}, {"tail", r.profile.tail},
-                  {"water", r.profile.water}, {"samples", r.profile.samples}};
+  if (arrays) {
+    j["order_by_bond"] = r.order_by_bond;
+    j["profile"] = {{"z", r.profile.z}, {"head", r.profile.head}, {"tail", r.profile.tail},
+                    {"water", r.profile.water}, {"samples", r.profile.samples}};
+  }
+  if (blew_up(r.status)) null_observables(j, {"scene", "lipids", "box", "membrane_tension_convention"});
   return j;
 }
 

@@ -15,22 +15,6 @@
 
 namespace dpdrng::dpd {
 
-void DecompConfig::validate() const {
-  WaterConfig w = water;
-  w.generator = noise.generator;
-  w.seeding = rng::Seeding::distance;
-  w.taps = {};
-  w.validate();
-  // Every pair is visited every step (twice): fine for the paper's 256 beads, not for a membrane.
-  if (w.particles > 20000) throw InputError("particles: the decomposition check visits all pairs; at most 20000");
-  if (chi2_every < 0) throw InputError("chi2_every must not be negative");
-  if (ttest_pairs < 0 || ttest_pairs >= w.particles) throw InputError("ttest_pairs must be in 0..particles-1");
-  if (!(alpha > 0 && alpha < 1)) throw InputError("alpha must be in (0, 1)");
-  if (noise.seeding.kind == DecompSeedingKind::grid &&
-      (noise.seeding.grid_bits < rng::kMinGridBits || noise.seeding.grid_bits > rng::kMaxGridBits))
-    throw InputError("grid seeding: grid_bits out of range");
-}
-
 namespace {
 
 using Clock = std::chrono::steady_clock;

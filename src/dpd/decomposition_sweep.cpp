@@ -11,168 +11,9 @@
 #include <toml++/toml.h>
 
 #include "dpdrng/common/error.hpp"
+#include "dpdrng/common/output.hpp"
 
 namespace dpdrng::dpd {
-
-namespace {
-
-// One TOML table whose keys are checked off as they are read, so that a misspelt key is an error.
-class Keys {
- public:
-  Keys(const toml::table* t, std::string path, std::string origin)
-      : t_(t), path_(std::move(path)), origin_(std::move(origin)) {}
-  [[noreturn]] void fail(const std::string& key, const std::string& why) const {
-    throw InputError(origin_ + ": " + (path_.empty() ? key : path_ + "." + key) + ": " + why);
-  }
-  const toml::node* get(const std::string& key) {
-    used_.insert(key);
-    return t_ ? t_->get(key) : nullptr;
-  }
-  std::string str(const std::string& key, std::string def) {
-    const toml::node* n = get(key);
-    if (!n) return def;
-    if (!n->is_string()) fail(key, "must be a string");
-    return *n->value<std::string>();
-  }
-  std::vector<std::string> strings(const std::string& key, std::vector<std::string> def) {
-    const toml::node* n = get(key);
-    if (!n) return def;
-    const toml::array* a = n->as_array();
-    if (!a || a->empty()) fail(key, "must be a non-empty array of strings");
-    std::vector<std::string> out;
-    for (const auto& e : *a) {
-      if (!e.is_string()) fail(key, "must be a non-empty array of strings");
-      out.push_back(*e.value<std::string>());
-    }
-    return out;
-  }
-  long integer(const std::string& key, long def, long lo, long hi) {
-    const toml::node* n = get(key);
-    if (!n) return def;
-    return check_int(key, *n, lo, hi);
-  }
-  std::vector<long> integers(const std::string& key, long lo, long hi) {
-    const toml::node* n = get(key);
-    if (!n) return {};
-    std::vector<long> out;
-    if (const toml::array* a = n->as_array()) {
-      if (a->empty()) fail(key, "must not be empty");
-      for (const auto& e : *a) out.push_back(check_int(key, e, lo, hi));
-    } else {
-      out.push_back(check_int(key, *n, lo, hi));
-    }
-    return out;
-  }
-  double num(const std::string& key, double def) {
-    const toml::node* n = get(key);
-    if (!n) return def;
-    const auto v = n->value<double>();  // integers convert
-    if (!v || !std::isfinite(*v)) fail(key, "must be a finite number");
-    return *v;
-  }
-  void done() const {
-    if (!t_) return;
-    for (const auto& [k, v] : *t_)
-      if (!used_.count(std::string(k.str()))) fail(std::string(k.str()), "unknown key");
-  }
-
- private:
-  long check_int(const std::string& key, const toml::node& n, long lo, long hi) const {
-    const auto v = n.value_exact<std::int64_t>();
-    if (!v || *v < lo || *v > hi) fail(key, "must be an integer in " + std::to_string(lo) + ".." + std::to_string(hi));
-    return static_cast<long>(*v);
-  }
-  const toml::table* t_;
-  std::string path_, origin_;
-  std::set<std::string> used_;
-};
-
-template <class F>
-auto named(const Keys& k, const std::string& key, F&& f) {
-  try {
-    return f();
-  } catch (const InputError& e) {
-    k.fail(key, e.what());
-  }
-}
-
-}  // namespace
-
-DecompSweep parse_decomp_sweep(const std::string& text, const std::string& origin) {
-  toml::table root;
-  try {
-    root = toml::parse(text, origin);
-  } catch (const toml::parse_error& e) {
-    std::ostringstream o;
-    o << origin << ": " << e.description() << " (line " << e.source().begin.line << ")";
-    throw InputError(o.str());
-  }
-  DecompSweep s;
-  Keys top(&root, "", origin);
-  s.name = top.str("name", s.name);
-  s.description = top.str("description", "");
-  for (const auto& d : top.strings("domains", {"2"})) s.domains.push_back(named(top, "domains", [&] { return parse_domains(d); }));
-  for (const auto& d : top.strings("seedings", {"distance", "pair-step", "grid", "canonical"}))
-    s.seedings.push_back(named(top, "seedings", [&] { return parse_decomp_seeding(d); }));
-  s.distributions.clear();
-  for (const auto& d : top.strings("distributions", {"gauss"}))
-    s.distributions.push_back(named(top, "distributions", [&] { return rng::parse_distribution(d); }));
-
-  const toml::node* gens = top.get("generators");
-  if (!gens || !gens->is_array_of_tables()) top.fail("generators", "needs at least one [[generators]] table");
-  std::size_t gi = 0;
-  for (const auto& node : *gens->as_array()) {
-    Keys g(node.as_table(), "generators[" + std::to_string(gi++) + "]", origin);
-    rng::GeneratorSpec spec;
-    spec.name = g.str("name", "");
-    if (spec.name.empty()) g.fail("name", "is required");
-    std::vector<long> rounds = g.integers("rounds", 0, 64);
-    if (rounds.empty()) rounds.push_back(0);
-    for (long r : rounds) {
-      spec.rounds = static_cast<int>(r);
-      s.generators.push_back(named(g, "rounds", [&] { return rng::validated(spec); }));
-    }
-    g.done();
-  }
-
-  DecompConfig& b = s.base;
-  Keys scene(root["scene"].as_table(), "scene", origin);
-  if (scene.str("name", "water") != "water") scene.fail("name", "only the water scene is supported");
-  b.water.particles = static_cast<int>(scene.integer("particles", 256, 2, 20000));
-  b.water.density = scene.num("density", b.water.density);
-  b.water.a = scene.num("a", b.water.a);
-  b.water.gamma = scene.num("gamma", b.water.gamma);
-  b.water.kT = scene.num("kT", b.water.kT);
-  b.water.lambda = scene.num("lambda", b.water.lambda);
-  b.water.dt = scene.num("dt", b.water.dt);
-  b.water.steps = scene.integer("steps", b.water.steps, 1, 100'000'000);
-  b.water.equilibrate = scene.integer("equilibrate", b.water.equilibrate, 0, 100'000'000);
-  b.water.init_seed = static_cast<std::uint64_t>(scene.integer("init_seed", 2021, 0, (1L << 62)));
-  b.noise.seed = static_cast<std::uint64_t>(scene.integer("seed", 1, 0, (1L << 62)));
-  scene.done();
-  Keys tests(root["tests"].as_table(), "tests", origin);
-  b.chi2_every = static_cast<int>(tests.integer("chi2_every", b.chi2_every, 0, 1'000'000));
-  b.ttest_pairs = static_cast<int>(tests.integer("ttest_pairs", b.ttest_pairs, 0, 20000));
-  b.alpha = tests.num("alpha", b.alpha);
-  tests.done();
-  top.get("scene"), top.get("tests");
-  top.done();
-  named(top, "scene", [&] {
-    DecompConfig c = b;
-    c.noise.generator = s.generators.front();
-    c.validate();
-    return 0;
-  });
-  return s;
-}
-
-DecompSweep load_decomp_sweep(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError("cannot read " + path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parse_decomp_sweep(ss.str(), path);
-}
 
 std::vector<DecompResult> run_decomp_sweep(const DecompSweep& sw, const SweepProgress& progress) {
   std::vector<DecompResult> out;
@@ -319,38 +160,27 @@ std::vector<DecompChart> decomp_charts(const std::vector<DecompResult>& rows) {
   return out;
 }
 
-namespace {
-void write_file(const std::filesystem::path& p, const std::string& text) {
-  std::ofstream o(p);
-  if (!o) throw InputError("cannot write " + p.string());
-  o << text;
-  if (!o) throw std::runtime_error("write failed: " + p.string());
-}
-}  // namespace
-
 std::string write_decomp_outputs(const DecompSweep& sw, const std::vector<DecompResult>& rows, const std::string& out,
                                  std::ostream* log) {
   const std::filesystem::path dir(out);
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw InputError("cannot create " + out + ": " + ec.message());
+  prepare_output_directory(dir, "output directory");
   std::string md = "# " + sw.name + "\n\n" + (sw.description.empty() ? "" : sw.description + "\n\n") +
                    decomp_table_markdown(rows);
-  write_file(dir / "table.csv", decomp_table_csv(rows));
+  write_text_file(dir / "table.csv", decomp_table_csv(rows));
   nlohmann::json j = nlohmann::json::array();
   for (const auto& r : rows) j.push_back(to_json(r));
-  write_file(dir / "results.json", j.dump(1) + "\n");
+  write_text_file(dir / "results.json", j.dump(1) + "\n");
   const bool gnuplot = std::system("command -v gnuplot >/dev/null 2>&1") == 0;
   for (const auto& c : decomp_charts(rows)) {
-    write_file(dir / (c.name + ".dat"), c.data);
-    write_file(dir / (c.name + ".gp"), c.script);
+    write_text_file(dir / (c.name + ".dat"), c.data);
+    write_text_file(dir / (c.name + ".gp"), c.script);
     md += "\n![" + c.name + "](" + c.name + ".svg)\n";
     if (!gnuplot) continue;
     const std::string cmd = "cd '" + dir.string() + "' && gnuplot -e \"set terminal svg size 1100,520 dynamic; set output '" +
                             c.name + ".svg'\" '" + c.name + ".gp' 2>'" + c.name + ".gnuplot.log'";
     if (std::system(cmd.c_str()) != 0 && log) *log << "gnuplot failed for " << c.name << " (see its .gnuplot.log)\n";
   }
-  write_file(dir / "table.md", md);
+  write_text_file(dir / "table.md", md);
   return md;
 }
 

@@ -59,6 +59,39 @@ void put_value_sem(nlohmann::json& j, const std::string& key, const Stat& s) {
   j[key + "_sem"] = s.sem;
 }
 
+namespace {
+
+void put_arrays(nlohmann::json& j, const RunResult& r) {
+  const VelocityPdf& p = r.velocity_pdf;
+  j["velocity_pdf"] = {{"v", p.v}, {"x", p.pdf[0]}, {"y", p.pdf[1]}, {"z", p.pdf[2]},
+                       {"maxwell_boltzmann_kT", p.mb_kT}, {"maxwell_boltzmann_measured", p.mb_measured},
+                       {"samples", p.samples}};
+  j["msd"] = {{"tau", r.msd.tau}, {"msd", r.msd.msd}};
+  j["rdf"] = {{"r", r.rdf.r}, {"g", r.rdf.g}, {"samples", r.rdf.samples}};
+  if (!r.series.step.empty())
+    j["series"] = {{"step", r.series.step}, {"temperature", r.series.temperature},
+                   {"pressure", r.series.pressure}, {"pressure_conservative", r.series.pressure_conservative},
+                   {"px", r.series.px}, {"py", r.series.py}, {"pz", r.series.pz}};
+}
+
+
+}  // namespace
+
+void null_observables(nlohmann::json& j, std::initializer_list<const char*> kept) {
+  static constexpr const char* kLabels[] = {"status", "steps_done", "generator", "seeding", "distribution", "pairs",
+                                            "particles", "timings", "momentum_drift_per_bead", "momentum_final",
+                                            "series"};
+  auto keep = [&](const std::string& k) {
+    for (const char* l : kLabels)
+      if (k == l) return true;
+    for (const char* l : kept)
+      if (k == l) return true;
+    return false;
+  };
+  for (auto it = j.begin(); it != j.end(); ++it)
+    if (!keep(it.key())) it.value() = nullptr;
+}
+
 nlohmann::json to_json(const RunResult& r, bool arrays) {
   nlohmann::json j;
   put_run_labels(j, r);
@@ -86,18 +119,8 @@ nlohmann::json to_json(const RunResult& r, bool arrays) {
   j["timings"] = timings_json(r.timings);
   j["timings"]["production_s"] = r.timings.production_s;
   j["timings"]["production_particle_steps_per_s"] = r.timings.production_particle_steps_per_s;
-  if (!arrays) return j;
-  const VelocityPdf& p = r.velocity_pdf;
-  j["velocity_pdf"] = {{"v", p.v}, {"x", p.pdf[0]}, {"y", p.pdf[1]}, {"z", p.pdf[2]},
-                       {"maxwell_boltzmann_kT", p.mb_kT}, {"maxwell_boltzmann_measured", p.mb_measured},
-                       {"samples", p.samples}};
-  j["msd"] = {{"tau", r.msd.tau}, {"msd", r.msd.msd}};
-  j["rdf"] = {{"r", r.rdf.r}, {"g", r.rdf.g}, {"samples", r.rdf.samples}};
-  if (!r.series.step.empty())
-    j["series"] = {{"step", r.series.step}, {"temperature", r.series.temperature},
-                   {"pressure", r.series.pressure}, {"pressure_conservative", r.series.pressure_conservative},
-                   {"px", r.series.px}, {"py", r.series.py}, {"pz", r.series.pz}};
+  if (arrays) put_arrays(j, r);
+  if (blew_up(r.status)) null_observables(j, {"integrator", "box_length"});
   return j;
 }
-
 }  // namespace dpdrng::dpd

@@ -38,6 +38,13 @@ struct TapConfig {
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
 };
 
+// Limits that keep a run meaningful in double precision; InputError "invalid <field>: <why>" otherwise.
+// A step must move a bead at the thermal speed √k_BT by at least 2^-32 of the box length: below that its
+// coordinates (53-bit doubles of size ~L) cannot resolve the motion and every observable is frozen or noise.
+void check_step_resolves(double dt, double kT, double box_length, const std::string& field);
+// The box may be at most 2^24 cut-offs wide: wider, the coordinates' rounding approaches the scale of a pair.
+void check_box_resolves(double box_length, double rc, const std::string& field);
+
 struct WaterConfig {
   // System
   int particles = 256;

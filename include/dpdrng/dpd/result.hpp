@@ -96,6 +96,10 @@ nlohmann::json to_json(const Stat& s);           // {mean, std, sem, n}
 nlohmann::json timings_json(const Timings& t);   // the whole-run timings (not the production-only figures)
 void put_mean_sem(nlohmann::json& j, const std::string& key, const Stat& s);   // key_mean, key_sem
 void put_value_sem(nlohmann::json& j, const std::string& key, const Stat& s);  // key (the mean), key_sem
+// "unstable at step k: …": the run blew up, and its observables mean nothing.
+inline bool blew_up(const std::string& status) { return status.rfind("unstable", 0) == 0; }
+// For a run that blew up: every key of a JSON record except `kept` (labels, timings, diagnostics) becomes null.
+void null_observables(nlohmann::json& j, std::initializer_list<const char*> kept);
 // status, steps_done, the noise labels, pair mode and bead count of any scene's result.
 template <class Result>
 void put_run_labels(nlohmann::json& j, const Result& r) {
