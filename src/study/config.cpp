@@ -262,6 +262,9 @@ StudyConfig parse_config(const std::string& toml_text, const std::string& origin
     msg << origin << ":" << e.source().begin.line << ":" << e.source().begin.column << ": " << e.description();
     throw InputError(msg.str());
   }
+  if (!root.contains("study") && (root.contains("domains") || root.contains("generators")))
+    throw InputError(origin + ": this is a decomposition sweep (top-level domains/generators), not a study config: "
+                              "run it with `dpdrng decompose --study " + origin + "`");
   StudyConfig c;
   c.source_text = toml_text;
   Section top(&root, "", origin);

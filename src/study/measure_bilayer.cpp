@@ -41,6 +41,19 @@ void record_bilayer(const dpd::BilayerResult& r, CellResult& out) {
   }
   auto& sc = out.scalars;
   sc["steps_done"] = double(r.steps_done);
+  sc["momentum_drift"] = r.momentum_drift;
+  sc["box_z"] = r.box[2];
+  if (!r.series.step.empty()) {
+    std::vector<double> steps(r.series.step.begin(), r.series.step.end());
+    out.series["series/step"] = detail::thin(steps, 1000);
+    out.series["series/temperature"] = detail::thin(r.series.temperature, 1000);
+    out.series["series/tension"] = detail::thin(r.series.tension, 1000);
+  }
+  sc["cost.bonded_seconds"] = r.bonded_s;
+  detail::record_costs(r.timings, r.steps_done, out);
+  // A run that blew up has no observables: they stay absent (null to h5py), never 0. A disrupted one (a lipid
+  // left the bilayer) ran to the end: its observables are data.
+  if (out.status == "unstable") return;
   put(out, "temperature", r.temperature);
   put(out, "pressure", r.pressure);
   put(out, "pressure_xx", r.pressure_diag[0]);
@@ -52,8 +65,6 @@ void record_bilayer(const dpd::BilayerResult& r, CellResult& out) {
   put(out, "head_separation", r.head_separation);
   put(out, "tail_order", r.tail_order);
   sc["lipids_out_max"] = r.lipids_out_max;
-  sc["momentum_drift"] = r.momentum_drift;
-  sc["box_z"] = r.box[2];
   if (!r.profile.z.empty()) {
     out.series["profile/z"] = r.profile.z;
     out.series["profile/head"] = r.profile.head;
@@ -61,14 +72,6 @@ void record_bilayer(const dpd::BilayerResult& r, CellResult& out) {
     out.series["profile/water"] = r.profile.water;
   }
   if (!r.order_by_bond.empty()) out.series["order_by_bond"] = r.order_by_bond;
-  if (!r.series.step.empty()) {
-    std::vector<double> steps(r.series.step.begin(), r.series.step.end());
-    out.series["series/step"] = detail::thin(steps, 1000);
-    out.series["series/temperature"] = detail::thin(r.series.temperature, 1000);
-    out.series["series/tension"] = detail::thin(r.series.tension, 1000);
-  }
-  sc["cost.bonded_seconds"] = r.bonded_s;
-  detail::record_costs(r.timings, r.steps_done, out);
 }
 
 }  // namespace dpdrng::study

@@ -99,6 +99,15 @@ void record_run(const dpd::RunResult& r, CellResult& out) {
   }
   auto& sc = out.scalars;
   sc["steps_done"] = double(r.steps_done);
+  sc["momentum_drift"] = r.momentum_drift;
+  if (!r.series.temperature.empty()) {
+    std::vector<double> steps(r.series.step.begin(), r.series.step.end());
+    out.series["series/step"] = detail::thin(steps, 1000);
+    out.series["series/temperature"] = detail::thin(r.series.temperature, 1000);
+  }
+  detail::record_costs(r.timings, r.steps_done, out);
+  // A run that blew up has no observables: they stay absent (null to h5py), never 0.
+  if (!r.ok()) return;
   sc["temperature_mean"] = r.temperature.mean;
   sc["temperature_std"] = r.temperature.std;
   sc["temperature_sem"] = r.temperature.sem;
@@ -108,7 +117,6 @@ void record_run(const dpd::RunResult& r, CellResult& out) {
   sc["pressure_xx"] = r.pressure_diag[0].mean;
   sc["pressure_yy"] = r.pressure_diag[1].mean;
   sc["pressure_zz"] = r.pressure_diag[2].mean;
-  sc["momentum_drift"] = r.momentum_drift;
   if (!r.msd.msd.empty()) {
     sc["diffusion_coefficient"] = r.msd.diffusion;
     sc["diffusion_sem"] = r.msd.diffusion_sem;
@@ -129,12 +137,6 @@ void record_run(const dpd::RunResult& r, CellResult& out) {
     out.series["rdf/r"] = r.rdf.r;
     out.series["rdf/g"] = r.rdf.g;
   }
-  if (!r.series.temperature.empty()) {
-    std::vector<double> steps(r.series.step.begin(), r.series.step.end());
-    out.series["series/step"] = detail::thin(steps, 1000);
-    out.series["series/temperature"] = detail::thin(r.series.temperature, 1000);
-  }
-  detail::record_costs(r.timings, r.steps_done, out);
 }
 
 }  // namespace dpdrng::study

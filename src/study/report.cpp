@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 
+#include "dpdrng/common/output.hpp"
 #include "dpdrng/study/store.hpp"
 #include "report_common.hpp"
 
@@ -17,11 +18,7 @@ namespace fs = std::filesystem;
 
 namespace detail {
 
-void write_text(const fs::path& p, const std::string& text) {
-  std::ofstream out(p, std::ios::binary | std::ios::trunc);
-  out << text;
-  if (!out) throw std::runtime_error("cannot write " + p.string());
-}
+void write_text(const fs::path& p, const std::string& text) { write_text_file(p, text); }
 
 std::string num(double x) {
   if (!std::isfinite(x)) return "";
@@ -96,6 +93,15 @@ std::string report_header(const StudyConfig& config, const Analysis& a, const st
   md << "- replicas per variant: " << config.replicas << "; reference: " << config.reference << "; α = " << a.alpha
      << "\n- config hash `" << config.hash << "` (the config is stored in study.h5 and study.toml); generated "
      << when << "\n\n";
+  return md.str();
+}
+
+std::string unreadable_cells_markdown(const std::vector<std::string>& files) {
+  if (files.empty()) return "";
+  std::ostringstream md;
+  md << "**Unreadable cell files** (left out of every table; `study run` computes them again):\n\n";
+  for (const auto& f : files) md << "- `" << f << "`\n";
+  md << "\n";
   return md.str();
 }
 
@@ -179,7 +185,7 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
   const auto have = [&](const std::string& n) { return std::find(made.begin(), made.end(), n) != made.end(); };
 
   std::ostringstream md;
-  md << detail::report_header(config, a, cells);
+  md << detail::report_header(config, a, cells) << detail::unreadable_cells_markdown(options.unreadable);
 
   md << "## Verdicts\n\n"
      << "Each variant (generator × rounds × distribution × seeding) is compared with MT19937 run with identical "

@@ -8,6 +8,7 @@
 #include <ostream>
 #include <sstream>
 
+#include "dpdrng/common/output.hpp"
 #include "dpdrng/study/report.hpp"
 #include "report_chart.hpp"
 
@@ -46,21 +47,19 @@ bool render(const Chart& c, const fs::path& dir, bool run, std::ostream* log) {
     const Line& l = c.lines[k];
     if (l.rows.empty()) continue;
     const std::string file = "data/" + c.name + "_" + std::to_string(k) + ".dat";
-    std::ofstream d(dir / file);
+    std::ostringstream d;
     d << "# " << l.title << "\n";
     for (std::size_t r = 0; r < l.rows.size(); ++r) {
       for (double x : l.rows[r]) d << (std::isfinite(x) ? std::to_string(x) : std::string("nan")) << ' ';
       if (r < l.labels.size()) d << q(l.labels[r]);
       d << '\n';
     }
+    write_text_file(dir / file, d.str());
     gp << (first ? "" : ", \\\n     ") << q(file) << ' ' << l.style << " title " << q(l.title);
     first = false;
   }
   gp << '\n';
-  {
-    std::ofstream s(dir / (c.name + ".gp"));
-    s << gp.str();
-  }
+  write_text_file(dir / (c.name + ".gp"), gp.str());
   if (!run) return true;
   for (const auto& [term, ext] : {std::pair{"svg size 900,560 dynamic font 'sans,12'", "svg"},
                                   std::pair{"pngcairo size 1100,680 font 'sans,11'", "png"}}) {

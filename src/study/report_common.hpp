@@ -22,5 +22,7 @@ std::string chart_link(const std::string& name, const std::string& alt);    // P
 std::string report_header(const StudyConfig& config, const Analysis& a, const std::vector<CellResult>& cells);
 // The "Unstable and failed cells" section, with every cell's notes.
 std::string broken_cells_markdown(const std::vector<CellResult>& cells);
+// The cell files that exist but could not be read (empty when there are none).
+std::string unreadable_cells_markdown(const std::vector<std::string>& files);
 
 }  // namespace dpdrng::study::detail

@@ -33,10 +33,18 @@ RunSummary run_study(const StudyConfig& config, Store& store, const RunOptions& 
 
   std::vector<Cell> todo;
   for (const auto& c : cells) {
-    if (store.has(c))
-      ++sum.resumed;
-    else
-      todo.push_back(c);
+    std::string why;
+    switch (store.state(c, &why)) {
+      case Store::State::stored: ++sum.resumed; break;
+      case Store::State::missing: todo.push_back(c); break;
+      case Store::State::unreadable:
+        sum.unreadable.push_back(store.cell_path(c).string());
+        if (options.progress)
+          *options.progress << "[study] warning: " << store.cell_path(c).string() << " is unreadable (" << why
+                            << "): computing the cell again\n";
+        todo.push_back(c);
+        break;
+    }
   }
   // Cells that also run the NIST battery cost many times a plain cell: they go last, so that an interrupted or
   // deadline-bound run has whole replica sets of physics and pass fractions first. The order of execution

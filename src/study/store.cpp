@@ -24,10 +24,32 @@ std::string read_text(const fs::path& p) {
 // Data first, then the rename: after a crash the name points at a complete file or at nothing.
 void sync_file(const fs::path& p) {
   const int fd = ::open(p.c_str(), O_RDONLY);
-  if (fd < 0) throw std::runtime_error("cannot open " + p.string() + " to sync it");
+  if (fd < 0) throw OutputError(p.string() + ": cannot open it to sync it");
   const int rc = ::fsync(fd);
   ::close(fd);
-  if (rc != 0) throw std::runtime_error("fsync " + p.string() + " failed");
+  if (rc != 0) throw OutputError(p.string() + ": fsync failed");
+}
+
+// The cell files present (hidden temporaries left by a killed run excluded), in name order.
+std::vector<fs::path> cell_files(const fs::path& dir) {
+  std::vector<fs::path> files;
+  if (fs::exists(dir / "cells"))
+    for (const auto& e : fs::directory_iterator(dir / "cells"))
+      if (e.path().extension() == ".h5" && e.path().filename().string()[0] != '.') files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// Reads a whole cell file, checking that it belongs to the config with `hash`; throws with the reason.
+CellResult read_cell_file(const fs::path& p, const std::string& hash) {
+  h5::Handle f = h5::open_file(p.string());
+  const auto attrs = h5::read_attributes(f.id());
+  const auto it = attrs.find("config_hash");
+  const std::string* stored = it == attrs.end() ? nullptr : std::get_if<std::string>(&it->second);
+  if (!stored) throw std::runtime_error("no config_hash attribute");
+  if (*stored != hash) throw std::runtime_error("written by another config (hash " + *stored + ")");
+  h5::Handle g = h5::open_group(f.id(), "cell");
+  return read_cell(g.id());
 }
 
 fs::path temp_name(const fs::path& p) {
@@ -46,7 +68,7 @@ void write_file_atomically(const fs::path& path, const std::string& text) {
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     out << text;
-    if (!out.flush()) throw std::runtime_error("cannot write " + tmp.string());
+    if (!out.flush()) throw OutputError(tmp.string() + ": cannot write it");
   }
   sync_file(tmp);
   fs::rename(tmp, path);
@@ -85,33 +107,39 @@ StudyConfig Store::stored_config() const {
   return c;
 }
 
-bool Store::has(const Cell& cell) const {
+Store::State Store::state(const Cell& cell, std::string* reason) const {
   const fs::path p = cell_path(cell);
-  if (!fs::exists(p)) return false;
-  // A file that exists but cannot be read (truncated by hand, a full disk) counts as missing: recompute it.
+  if (!fs::exists(p)) return State::missing;
+  // The whole record is read: a file cut short by hand or a full disk must not pass for a finished cell.
   try {
     std::lock_guard lk(h5::lock());
-    h5::Handle f = h5::open_file(p.string());
-    const auto attrs = h5::read_attributes(f.id());
-    auto it = attrs.find("config_hash");
-    return it != attrs.end() && std::get_if<std::string>(&it->second) && h5::exists(f.id(), "cell");
-  } catch (const std::exception&) {
-    return false;
+    const CellResult r = read_cell_file(p, stored_hash());
+    if (r.cell.id() != cell.id()) throw std::runtime_error("holds cell " + r.cell.id());
+    return State::stored;
+  } catch (const std::exception& e) {
+    if (reason) *reason = e.what();
+    return State::unreadable;
   }
 }
 
 void Store::save(const CellResult& r) {
   const fs::path p = cell_path(r.cell);
   const fs::path tmp = temp_name(p);
-  {
-    std::lock_guard lk(h5::lock());
-    h5::Handle f = h5::create_file(tmp.string());
-    h5::write_attribute(f.id(), "config_hash", stored_hash());
-    h5::Handle g = h5::create_group(f.id(), "cell");
-    write_cell(g.id(), r);
+  try {
+    {
+      std::lock_guard lk(h5::lock());
+      h5::Handle f = h5::create_file(tmp.string());
+      h5::write_attribute(f.id(), "config_hash", stored_hash());
+      h5::Handle g = h5::create_group(f.id(), "cell");
+      write_cell(g.id(), r);
+    }
+    sync_file(tmp);
+    fs::rename(tmp, p);
+  } catch (const OutputError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw OutputError(p.string() + ": " + e.what());
   }
-  sync_file(tmp);
-  fs::rename(tmp, p);
 }
 
 CellResult Store::load(const Cell& cell) const {
@@ -121,32 +149,28 @@ CellResult Store::load(const Cell& cell) const {
   return read_cell(g.id());
 }
 
-std::vector<CellResult> Store::load_all() const {
-  std::vector<fs::path> files;
-  if (fs::exists(dir_ / "cells"))
-    for (const auto& e : fs::directory_iterator(dir_ / "cells"))
-      if (e.path().extension() == ".h5" && e.path().filename().string()[0] != '.') files.push_back(e.path());
-  std::sort(files.begin(), files.end());
+std::vector<CellResult> Store::load_all(std::vector<UnreadableCell>* unreadable) const {
   std::vector<CellResult> out;
+  const std::string hash = stored_hash();
   std::lock_guard lk(h5::lock());
-  for (const auto& p : files) {
+  for (const auto& p : cell_files(dir_)) {
     try {
-      h5::Handle f = h5::open_file(p.string());
-      h5::Handle g = h5::open_group(f.id(), "cell");
-      out.push_back(read_cell(g.id()));
-    } catch (const std::exception&) {
-      // Unreadable leftovers are skipped here; `study run` recomputes them.
+      out.push_back(read_cell_file(p, hash));
+      if (out.back().cell.id() != p.stem().string()) {
+        const std::string held = out.back().cell.id();
+        out.pop_back();
+        throw std::runtime_error("holds cell " + held);
+      }
+    } catch (const std::exception& e) {
+      // `study run` recomputes these; the report lists them by name.
+      if (unreadable) unreadable->push_back({p, e.what()});
     }
   }
   return out;
 }
 
 std::size_t Store::assemble(const StudyConfig& config) const {
-  std::vector<fs::path> files;
-  if (fs::exists(dir_ / "cells"))
-    for (const auto& e : fs::directory_iterator(dir_ / "cells"))
-      if (e.path().extension() == ".h5" && e.path().filename().string()[0] != '.') files.push_back(e.path());
-  std::sort(files.begin(), files.end());
+  const std::vector<fs::path> files = cell_files(dir_);
   const fs::path out = study_file();
   const fs::path tmp = dir_ / ("study.h5.tmp" + std::to_string(::getpid()));
   std::size_t n = 0;

@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -220,4 +221,48 @@ TEST(StudyCli, ABlownUpRunIsRecordedAsUnstableAndTheSweepGoesOn) {
   std::ifstream md(tmp.path / "o" / "report" / "report.md");
   const std::string text(std::istreambuf_iterator<char>(md), {});
   EXPECT_NE(text.find("unstable: 9"), std::string::npos);
+}
+
+// A cell file cut short or overwritten is named in a warning: `study run` computes it again, `study report`
+// lists it as unreadable (in the report too) instead of silently counting it as missing.
+TEST(StudyCli, UnreadableCellsAreNamedRecomputedAndReported) {
+  TempDir tmp;
+  write(tmp.path / "two.toml", R"(
+[study]
+name = "two"
+replicas = 1
+[sweep]
+distributions = ["gauss"]
+[[sweep.generator]]
+name = "tea32"
+rounds = [1]
+[scene]
+particles = 32
+steps = 60
+equilibrate = 20
+[tests]
+chi2_steps = 2
+ttest_pairs = 2
+nist_generators = []
+)");
+  const std::string out = (tmp.path / "out").string();
+  const std::string run = "study run '" + (tmp.path / "two.toml").string() + "' --out '" + out + "'";
+  std::string err;
+  ASSERT_EQ(run_cli(run, &err), 0) << err;
+  auto files = cell_files(out);
+  ASSERT_EQ(files.size(), 2u);
+  std::sort(files.begin(), files.end());
+  fs::resize_file(files[0], fs::file_size(files[0]) / 2);
+  ASSERT_EQ(run_cli(run, &err), 0) << err;
+  EXPECT_NE(err.find("warning: " + files[0].string() + " is unreadable"), std::string::npos) << err;
+  EXPECT_NE(err.find("1 computed, 1 resumed"), std::string::npos) << err;
+  EXPECT_EQ(Store(out).load_all().size(), 2u);
+
+  std::ofstream(files[1], std::ios::trunc) << "garbage";
+  ASSERT_EQ(run_cli("study report --no-charts '" + out + "'", &err), 0) << err;
+  EXPECT_NE(err.find(files[1].string() + " is unreadable"), std::string::npos) << err;
+  std::ifstream md(fs::path(out) / "report" / "report.md");
+  const std::string report((std::istreambuf_iterator<char>(md)), {});
+  EXPECT_NE(report.find("Unreadable cell files"), std::string::npos);
+  EXPECT_NE(report.find(files[1].filename().string()), std::string::npos);
 }

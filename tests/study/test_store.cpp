@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <set>
+#include <sstream>
 
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/study/runner.hpp"
@@ -218,4 +220,67 @@ TEST(StudyStore, AFailingCellIsRecordedAndTheSweepGoesOn) {
       EXPECT_EQ(r.status, "failed");
       EXPECT_EQ(r.reason, "engine exploded");
     }
+}
+
+TEST(StudyStore, UnreadableCellFilesAreNamedWithTheirReason) {
+  TempDir tmp;
+  const StudyConfig cfg = parse_config(kConfig, "c.toml");
+  Store store(tmp.path);
+  store.open_for(cfg);
+  fake::FakeMeasure m;
+  run_study(cfg, store, RunOptions{}, as_fn(m));
+  const auto cells = enumerate_cells(cfg);
+  const std::size_t n = cells.size();
+  ASSERT_GE(n, 4u);
+  // Cut short, garbage, another config's, and a cell stored under another cell's name.
+  fs::resize_file(store.cell_path(cells[0]), fs::file_size(store.cell_path(cells[0])) / 3);
+  std::ofstream(store.cell_path(cells[1]), std::ios::trunc) << "not an HDF5 file at all";
+  {
+    TempDir other;
+    StudyConfig changed = parse_config(fake::small_config_toml("other", 3), "o.toml");
+    Store o(other.path);
+    o.open_for(changed);
+    CellResult r;
+    r.cell = cells[2];
+    o.save(r);
+    fs::copy_file(o.cell_path(cells[2]), store.cell_path(cells[2]), fs::copy_options::overwrite_existing);
+  }
+  fs::copy_file(store.cell_path(cells[4]), store.cell_path(cells[3]), fs::copy_options::overwrite_existing);
+
+  std::string why;
+  EXPECT_EQ(store.state(cells[0], &why), Store::State::unreadable);
+  EXPECT_FALSE(why.empty());
+  EXPECT_EQ(store.state(cells[2], &why), Store::State::unreadable);
+  EXPECT_NE(why.find("another config"), std::string::npos) << why;
+  EXPECT_EQ(store.state(cells[3], &why), Store::State::unreadable);
+  EXPECT_NE(why.find(cells[4].id()), std::string::npos) << why;
+  EXPECT_EQ(store.state(cells[4]), Store::State::stored);
+  fs::remove(store.cell_path(cells[5]));
+  EXPECT_EQ(store.state(cells[5]), Store::State::missing);
+
+  std::vector<UnreadableCell> bad;
+  EXPECT_EQ(store.load_all(&bad).size(), n - 5);
+  ASSERT_EQ(bad.size(), 4u);
+  std::set<fs::path> named, expected;
+  for (const auto& u : bad) {
+    named.insert(u.file);
+    EXPECT_FALSE(u.reason.empty()) << u.file;
+  }
+  for (std::size_t k = 0; k < 4; ++k) expected.insert(store.cell_path(cells[k]));
+  EXPECT_EQ(named, expected);
+
+  // The next run names each in a warning and computes it again.
+  std::ostringstream progress;
+  RunOptions o;
+  o.progress = &progress;
+  const RunSummary s = run_study(cfg, store, o, as_fn(m));
+  EXPECT_EQ(s.computed, 5u);
+  EXPECT_EQ(s.unreadable.size(), 4u);
+  for (std::size_t k = 0; k < 4; ++k)
+    EXPECT_NE(progress.str().find("warning: " + store.cell_path(cells[k]).string() + " is unreadable"),
+              std::string::npos)
+        << progress.str();
+  bad.clear();
+  EXPECT_EQ(store.load_all(&bad).size(), n);
+  EXPECT_TRUE(bad.empty());
 }

@@ -16,6 +16,7 @@ namespace dpdrng::study {
 struct ReportOptions {
   bool charts = true;          // run gnuplot (skipped with a note when it is not installed)
   std::ostream* log = nullptr;
+  std::vector<std::string> unreadable;  // cell files that could not be read: listed by name in the report
 };
 
 // Returns the path of report.md.

@@ -1,6 +1,7 @@
 #pragma once
 // Runs the cells of a study (or of one shard) that the store does not hold yet, in parallel across cells,
-// saving each as soon as it finishes. The measurement is passed in, so tests can count and fake it.
+// saving each as soon as it finishes. A cell file that exists but cannot be read is named in a warning on the
+// progress stream and computed again. The measurement is passed in, so tests can count and fake it.
 #include <functional>
 #include <iosfwd>
 
@@ -27,6 +28,7 @@ struct RunSummary {
   std::size_t unstable = 0;
   std::size_t disrupted = 0;  // bilayer runs that lost a lipid
   std::size_t failed = 0;
+  std::vector<std::string> unreadable;  // cell files found unreadable and computed again
   double seconds = 0;
 };
 

@@ -14,6 +14,12 @@
 
 namespace dpdrng::study {
 
+// A cell file that exists but cannot be used: truncated, garbage, written by another config, or missing a field.
+struct UnreadableCell {
+  std::filesystem::path file;
+  std::string reason;
+};
+
 class Store {
  public:
   explicit Store(std::filesystem::path dir) : dir_(std::move(dir)) {}
@@ -23,10 +29,15 @@ class Store {
   // Reads the config stored in the directory (for merge and report).
   StudyConfig stored_config() const;
 
-  bool has(const Cell& cell) const;  // a complete, readable record exists
-  void save(const CellResult& result);
+  // Whether the cell's file is missing, whole and readable (with this store's config hash), or unreadable (then
+  // `reason` says why, in words).
+  enum class State { missing, stored, unreadable };
+  State state(const Cell& cell, std::string* reason = nullptr) const;
+  bool has(const Cell& cell) const { return state(cell) == State::stored; }
+  void save(const CellResult& result);  // OutputError when the file cannot be written
   CellResult load(const Cell& cell) const;
-  std::vector<CellResult> load_all() const;  // every readable cell file, in id order
+  // Every readable cell file, in id order; the others are listed in *unreadable when given.
+  std::vector<CellResult> load_all(std::vector<UnreadableCell>* unreadable = nullptr) const;
 
   // Writes study.h5 atomically from the cell files present; returns the number of cells in it.
   std::size_t assemble(const StudyConfig& config) const;
