@@ -1,0 +1,329 @@
+// Hostile input, as a new user would type it: every case exits 2 with one line naming the flag or key (or is
+// computed right), nothing is lost and nothing half-written. docs/bad-input.md lists each class with the test
+// here that keeps it true (BadInputDoc checks that the two agree).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "run_cli.hpp"
+
+using namespace dpdrng::cli_test;
+namespace fs = std::filesystem;
+
+namespace {
+
+// Exit 2, nothing on standard output, one line on standard error that mentions `names`.
+void expect_bad(const std::string& args, const std::string& names) {
+  const Result r = run(args);
+  EXPECT_EQ(r.code, 2) << args << ": " << r.err;
+  EXPECT_TRUE(r.out.empty()) << args;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
+  EXPECT_NE(r.err.find(names), std::string::npos) << args << ": " << r.err;
+}
+
+// A file under the test's scratch name, holding `bytes`.
+std::string file_with(const std::string& suffix, const std::string& bytes) {
+  const std::string p = scratch(suffix);
+  std::ofstream(p, std::ios::binary) << bytes;
+  return p;
+}
+
+std::string random_bytes(std::size_t n, unsigned seed) {
+  std::mt19937 g(seed);
+  std::string s(n, '\0');
+  for (auto& c : s) c = static_cast<char>(g() & 0xff);
+  return s;
+}
+
+std::string doubles(const std::vector<double>& v) {
+  return std::string(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(double));
+}
+
+}  // namespace
+
+TEST(BadInput, NistUniversalNegativeInitBlocks) {
+  const std::string f = file_with(".raw", random_bytes(20000, 1));
+  expect_bad("nist universal -i " + f + " --format raw --block-length 5 --init-blocks -1", "--init-blocks -1");
+  expect_bad("nist universal -i " + f + " --format raw --block-length 5 --init-blocks -2147483648", "--init-blocks");
+}
+
+TEST(BadInput, NistUniversalBlockLengthOne) {
+  const std::string f = file_with(".raw", random_bytes(20000, 2));
+  expect_bad("nist universal -i " + f + " --format raw --block-length 1", "--block-length 1");
+  expect_bad("nist -i " + f + " --format raw --universal-L 1", "--universal-L 1");
+  // L = 2, the smallest allowed, gives a P-value in [0, 1].
+  const Result r = run("nist universal -i " + f + " --format raw --block-length 2 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const double p = nlohmann::json::parse(r.out)["results"][0][0]["values"][0]["p"];
+  EXPECT_GE(p, 0.0);
+  EXPECT_LE(p, 1.0);
+}
+
+TEST(BadInput, NistLinearComplexityShortBlocks) {
+  const std::string f = file_with(".raw", random_bytes(20000, 3));
+  expect_bad("nist linear-complexity -i " + f + " --format raw --block-length 1", "--block-length 1");
+  expect_bad("nist linear-complexity -i " + f + " --format raw --block-length 11", "at least 12");
+  EXPECT_EQ(run("nist linear-complexity -i " + f + " --format raw --block-length 12").code, 0);
+}
+
+TEST(BadInput, NistTestParametersBeforeAnyWork) {
+  // Refused before the input is even opened: the file does not exist, yet the parameter is what is named.
+  const std::string none = scratch(".missing");
+  expect_bad("nist block-frequency -i " + none + " --block-length -5", "--block-length -5");
+  expect_bad("nist non-overlapping-template -i " + none + " --template-length 40", "--template-length 40");
+  expect_bad("nist non-overlapping-template -i " + none + " --blocks 0", "--blocks 0");
+  expect_bad("nist overlapping-template -i " + none + " --K 0", "--K 0");
+  expect_bad("nist overlapping-template -i " + none + " --template-length 9 --block-length 8", "--block-length 8");
+  expect_bad("nist serial -i " + none + " --template-length 1", "--template-length 1");
+  expect_bad("nist approximate-entropy -i " + none + " --template-length 30", "--template-length 30");
+  expect_bad("nist -i " + none + " --serial-m 99", "--serial-m 99");
+  expect_bad("nist -i " + none + " --tests Runs --universal-L 1 --streams 2", "--stream-bits");
+  // A battery parameter is not checked for tests that are not run.
+  const std::string f = file_with(".raw", random_bytes(2000, 4));
+  EXPECT_EQ(run("nist -i " + f + " --format raw --tests runs --serial-m 99").code, 0);
+}
+
+TEST(BadInput, NistPerTestOptionsInheritFromTheParent) {
+  const std::string f = file_with(".raw", random_bytes(4000, 5));
+  const Result before = run("nist --format raw runs -i " + f + " --json");
+  const Result after = run("nist runs --format raw -i " + f + " --json");
+  ASSERT_EQ(before.code, 0) << before.err;
+  EXPECT_EQ(before.out, after.out);
+  EXPECT_EQ(nlohmann::json::parse(before.out)["format"], "raw");
+  EXPECT_EQ(run("nist -i " + f + " --format raw --streams 2 --stream-bits 16000 runs --tsv").out,
+            run("nist runs -i " + f + " --format raw --streams 2 --stream-bits 16000 --tsv").out);
+  expect_bad("nist --format raw runs --format ascii -i " + f, "--format is given both before and after 'runs'");
+  expect_bad("nist --serial-m 5 runs --format raw -i " + f, "--serial-m is an option of the whole battery");
+}
+
+TEST(BadInput, NistAsciiRefusesBinaryInput) {
+  const std::string f = file_with(".raw", random_bytes(4000, 6));
+  expect_bad("nist -i " + f, "--format raw");
+  expect_bad("nist runs -i " + f, "not text");
+  // Text with other characters is still read as the reference reads it: '0'/'1' kept, the rest skipped.
+  const std::string t = file_with(".txt", "# bits of a test\n0110 1001\r\n1111 0000 x\n");
+  const Result r = run("nist frequency -i " + t + " --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["stream_bits"], 16);
+}
+
+TEST(BadInput, NistStreamOptions) {
+  const std::string f = file_with(".raw", random_bytes(4000, 7));
+  expect_bad("nist -i " + f + " --format raw --streams 3 --stream-bits 0", "--stream-bits: '0' is out of range");
+  expect_bad("nist -i " + f + " --format raw --streams 3", "--streams needs --stream-bits");
+  expect_bad("nist -i " + f + " --format raw --stream-bits 64", "--stream-bits needs --streams");
+  expect_bad("nist -i " + f + " --format raw --streams -3 --stream-bits 10", "'-3'");
+  expect_bad("nist -i " + f + " --format raw --streams 99999 --stream-bits 99999", "fewer than");
+  expect_bad("nist -i " + f + " --format raw --streams 4294967296 --stream-bits 4294967296", "more bits than");
+}
+
+TEST(BadInput, TtestOfHugeValues) {
+  // Period-3 pattern -a, +a, +a: lag-1 autocorrelation exactly -1/2 as n grows, whatever a.
+  std::vector<double> x(3000);
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] = (i % 3 ? 1e300 : -1e300) * (1 + 1e-3 * double(i % 7));
+  std::vector<double> unit(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) unit[i] = x[i] * 1e-300;
+  const Result big = run("ttest -f f64 --json -i " + file_with(".f64", doubles(x)));
+  const Result small = run("ttest -f f64 --json -i " + file_with(".unit.f64", doubles(unit)));
+  ASSERT_EQ(big.code, 0) << big.err;
+  const auto jb = nlohmann::json::parse(big.out), js = nlohmann::json::parse(small.out);
+  ASSERT_TRUE(jb["r"].is_number()) << big.out;
+  EXPECT_NEAR(jb["r"].get<double>(), js["r"].get<double>(), 1e-12);
+  EXPECT_NEAR(jb["r"].get<double>(), -0.5, 0.01);
+  EXPECT_TRUE(jb["p"].is_number());
+}
+
+TEST(BadInput, CorrOfAlternatingHugeValues) {
+  for (const double a : {1.0, 1e200}) {
+    std::vector<double> x(1000);
+    for (std::size_t i = 0; i < x.size(); ++i) x[i] = i % 2 ? a : -a;
+    const Result r = run("corr -f f64 --json -i " + file_with(".f64", doubles(x)));
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(nlohmann::json::parse(r.out)["checks"][0]["r"], -1.0) << a;
+  }
+}
+
+TEST(BadInput, GenCountOverflow) {
+  expect_bad("gen --count 99999999999999999999999", "--count: '99999999999999999999999' is out of range");
+  // tea64 writes two words a call: 2^63 calls are 2^64 words.
+  expect_bad("gen -g tea64 --count 9223372036854775808", "more than 2^64 - 1 words");
+}
+
+TEST(BadInput, NumbersAreDecimal) {
+  EXPECT_EQ(run("gen --count 3 --start 010").out, run("gen --count 3 --start 10").out);
+  expect_bad("gen --count 3 --start 0x10", "not a decimal integer");
+  expect_bad("gen --count 3e2", "not a decimal integer");
+  expect_bad("chi2 -i - -f u64 --alpha 0x1p-7", "--alpha");
+}
+
+TEST(BadInput, ValuesAbove2To64Refused) {
+  const std::string beyond = "18446744073709551616";
+  expect_bad("gen --count 1 --start " + beyond, "--start");
+  expect_bad("simulate -n 64 --steps 20 --equilibrate 10 -q --seed " + beyond, "--seed");
+  expect_bad("simulate -n 64 --steps 20 --equilibrate 10 -q --init-seed " + beyond, "--init-seed");
+  expect_bad("chi2 -i - -f u64 --per " + beyond, "--per");
+  expect_bad("gen --count 1 --key 1,2,3,4294967296", "--key");
+  const Result r = run("gen --count 1 --start 18446744073709551615");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.out.size(), 17u);
+}
+
+TEST(BadInput, RangesStatedInWords) {
+  const Result alpha = run("chi2 -i - -f u64 --alpha -1");
+  EXPECT_EQ(alpha.code, 2);
+  EXPECT_NE(alpha.err.find("expected a number within (0, 1)"), std::string::npos) << alpha.err;
+  const Result per = run("chi2 -i - -f u64 --per 0");
+  EXPECT_NE(per.err.find("expected an integer from 1 to 2^64 - 1"), std::string::npos) << per.err;
+  for (const Result& r : {alpha, per}) EXPECT_LT(r.err.size(), 160u) << r.err;
+  expect_bad("simulate --threads 5000", "from 0 to 1024");
+}
+
+TEST(BadInput, NegativeCountsNotEchoedAsHuge) {
+  for (const std::string args : {"gen --count -1", "nist -i x --streams -3 --stream-bits 8", "chi2 -i x -f u64 --per -2",
+                                 "corr -i x -f u64 --pairs -1"}) {
+    const Result r = run(args);
+    EXPECT_EQ(r.code, 2) << args;
+    EXPECT_EQ(r.err.find("1844674407370955"), std::string::npos) << args << ": " << r.err;
+    EXPECT_NE(r.err.find("out of range"), std::string::npos) << args << ": " << r.err;
+  }
+}
+
+TEST(BadInput, UnknownSubcommandIsNamed) {
+  expect_bad("foo", "unknown command 'foo' for dpdrng (known: list,");
+  expect_bad("study frobnicate", "unknown command 'frobnicate' for dpdrng study (known: run, merge, report, cells)");
+  expect_bad("bench", "dpdrng bench needs a command");
+}
+
+TEST(BadInput, StudyRunThreadsAndOut) {
+  const std::string cfg = std::string(DPDRNG_SOURCE_DIR) + "/study/ci.toml";
+  const std::string out = scratch(".out");
+  expect_bad("study run " + cfg + " --out " + out + " --threads -1", "--threads: '-1' is out of range");
+  expect_bad("study run " + cfg + " --out ''", "--out: an empty path");
+  const std::string file = file_with(".file", "a file, not a directory");
+  expect_bad("study run " + cfg + " --out " + file, "--out " + file + ": exists and is not a directory");
+  expect_bad("study run " + cfg + " --out " + file + "/sub", "cannot create it");
+  EXPECT_FALSE(fs::exists(out));
+  expect_bad("study merge " + out + " --out ''", "--out: an empty path");
+  expect_bad("decompose --study ''", "--study: an empty path");
+  expect_bad("study run " + cfg + " --out " + out + " --shard 99999999999/3", "--shard: k");
+  expect_bad("study cells " + cfg + " --shard 1/0", "--shard: N");
+  expect_bad("study cells " + cfg + " --shard 2", "not k/N");
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(BadInput, SimulateTinyStepAndDensity) {
+  expect_bad("simulate --dt 1e-300", "invalid dt: 1e-300: a bead at the thermal speed would move");
+  expect_bad("simulate --density 1e-300", "invalid density");
+  expect_bad("simulate --density 1e-4 --pairs cells", "more than 64 a bead");
+  expect_bad("simulate-bilayer --dt-warmup 1e-300", "invalid dt_warmup");
+  // The smallest step the rule allows for the default box still runs.
+  EXPECT_EQ(run("simulate -n 64 --steps 20 --equilibrate 10 -q --dt 1e-8").code, 0);
+}
+
+TEST(BadInput, SimulateSeriesDirCheckedFirst) {
+  const std::string file = file_with(".file", "x");
+  // 10^9 steps would run for days: the directory must be refused before the first one.
+  expect_bad("simulate --steps 1000000000 -q --series " + file + "/series", "--series " + file + "/series");
+  expect_bad("simulate --steps 1000000000 -q --series " + file, "exists and is not a directory");
+  expect_bad("simulate --steps 1000000000 -q --series ''", "--series: an empty path");
+  expect_bad("simulate --scene bilayer --steps 1000000000 -q --series " + file, "exists and is not a directory");
+  const std::string dir = scratch(".series") + "/a/b";
+  ASSERT_EQ(run("simulate -n 64 --steps 20 --equilibrate 10 -q --series " + dir).code, 0);
+  EXPECT_TRUE(fs::is_regular_file(dir + "/series.csv"));
+  fs::remove_all(scratch(".series"));
+}
+
+TEST(BadInput, UnstableSimulateHasNoObservables) {
+  const Result j = run("simulate -n 64 --steps 20 --equilibrate 10 -q --dt 5 --json");
+  ASSERT_EQ(j.code, 0) << j.err;
+  const auto r = nlohmann::json::parse(j.out);
+  ASSERT_EQ(r["status"].get<std::string>().rfind("unstable", 0), 0u);
+  for (const char* k : {"temperature", "temperature_mean", "pressure_mean", "diffusion_coefficient",
+                        "velocity_pdf_error_rate", "pressure_diag"})
+    EXPECT_TRUE(r[k].is_null()) << k << " = " << r[k];
+  EXPECT_TRUE(r["timings"].is_object());
+  const Result t = run("simulate -n 64 --steps 20 --equilibrate 10 -q --dt 5");
+  for (const char* row : {"temperature k_BT       n/a", "pressure               n/a", "diffusion coefficient  n/a"})
+    EXPECT_NE(t.out.find(row), std::string::npos) << row << "\n" << t.out;
+  const Result b = run("simulate --scene bilayer --steps 20 --equilibrate 10 -q --dt 5 --json");
+  ASSERT_EQ(b.code, 0) << b.err;
+  const auto rb = nlohmann::json::parse(b.out);
+  EXPECT_TRUE(rb["membrane_tension"].is_null());
+  EXPECT_TRUE(rb["temperature_mean"].is_null());
+  EXPECT_EQ(rb["scene"], "bilayer");
+}
+
+TEST(BadInput, WriteErrorsExitOne) {
+  if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
+  const std::string f = file_with(".raw", random_bytes(8000, 8));
+  const std::string cfg = std::string(DPDRNG_SOURCE_DIR) + "/study/ci.toml";
+  const std::vector<std::string> commands = {"list",
+                                             "gen --count 1000",
+                                             "gen --count 1000 --format raw",
+                                             "chi2 -f u64 -i " + f,
+                                             "ttest -f u64 -i " + f,
+                                             "corr -f u64 -i " + f,
+                                             "nist -i " + f + " --format raw --tsv --tests runs",
+                                             "nist runs -i " + f + " --format raw",
+                                             "study cells " + cfg,
+                                             "--help",
+                                             "simulate -n 64 --steps 20 --equilibrate 10 -q --json"};
+  for (const std::string& args : commands) {
+    const std::string cmd = "\"" DPDRNG_CLI_PATH "\" " + args + " > /dev/full 2> " + scratch(".err");
+    const int status = std::system(cmd.c_str());
+    EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 1) << args;
+    EXPECT_NE(slurp(scratch(".err")).find("dpdrng: write error: standard output"), std::string::npos) << args;
+  }
+  // A closed pipe is the reader's choice, not a lost result.
+  EXPECT_EQ(std::system("\"" DPDRNG_CLI_PATH "\" gen --count 100000000 | head -c 10 > /dev/null"), 0);
+}
+
+TEST(BadInput, ConfigOfTheOtherKind) {
+  const std::string decomp = std::string(DPDRNG_SOURCE_DIR) + "/study/decomposition.toml";
+  const std::string study = std::string(DPDRNG_SOURCE_DIR) + "/study/ci.toml";
+  expect_bad("study run " + decomp + " --out " + scratch(".out"), "dpdrng decompose --study");
+  expect_bad("study cells " + decomp, "this is a decomposition sweep");
+  expect_bad("decompose --study " + study + " --out " + scratch(".out"), "dpdrng study run");
+  EXPECT_FALSE(fs::exists(scratch(".out")));
+}
+
+TEST(BadInput, DecomposeTestsKeysNamed) {
+  std::ifstream in(std::string(DPDRNG_SOURCE_DIR) + "/study/decomposition.toml");
+  const std::string text((std::istreambuf_iterator<char>(in)), {});
+  int edits = 0;
+  auto with = [&](const std::string& from, const std::string& to) {
+    std::string s = text;
+    const std::size_t at = s.find(from);
+    if (at == std::string::npos) ADD_FAILURE() << "the shipped config lacks " << from;
+    else s.replace(at, from.size(), to);
+    std::string suffix = ".edit";
+    suffix += std::to_string(++edits);
+    suffix += ".toml";
+    return file_with(suffix, s);
+  };
+  const std::string out = " --out " + scratch(".out");
+  expect_bad("decompose --study " + with("alpha = 0.01", "alpha = 2") + out, "tests.alpha: must be within (0, 1)");
+  expect_bad("decompose --study " + with("ttest_pairs = 32", "ttest_pairs = 100000") + out, "tests.ttest_pairs");
+  expect_bad("decompose --study " + with("[scene]\nparticles = 256", "[scene]\nparticles = 16") + out,
+             "tests.ttest_pairs");
+  expect_bad("decompose --study " + with("[scene]\n", "[notscene]\n") + out, "notscene: unknown key");
+  expect_bad("decompose --study " + file_with(".table.toml", "scene = 5\n[[generators]]\nname = \"tea32\"\n") + out,
+             "scene: must be a table");
+  EXPECT_FALSE(fs::exists(scratch(".out")));
+}
+
+TEST(BadInput, DirectoryGivenAsInput) {
+  const std::string dir = ::testing::TempDir();
+  expect_bad("nist -i " + dir, "is a directory, not an input file");
+  expect_bad("chi2 -f u64 -i " + dir, "is a directory, not an input file");
+  expect_bad("nist -i " + scratch(".none"), "cannot open");
+  const std::string empty = file_with(".empty", "");
+  expect_bad("nist -i " + empty, "no bits in the input");
+}
