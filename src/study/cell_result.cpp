@@ -56,7 +56,13 @@ void write_cell(hid_t g, const CellResult& r) {
   h5::write_attribute(g, "unstable_step", std::int64_t{r.unstable_step});
   h5::write_attribute(g, "reason", r.reason);
   h5::write_attribute(g, "seconds", r.seconds);
-  for (const auto& [k, v] : r.scalars) h5::write_attribute(g, k, v);
+  for (const auto& [k, v] : r.scalars) {
+    // read_cell takes these names for the record's own fields: a scalar under one would come back as something else.
+    if (k.empty() || k.rfind("cell.", 0) == 0 || k.rfind("note.", 0) == 0 || k == "status" || k == "unstable_step" ||
+        k == "reason" || k == "seconds")
+      throw std::invalid_argument("cell scalar name '" + k + "' is empty or reserved");
+    h5::write_attribute(g, k, v);
+  }
   for (const auto& [k, v] : r.notes) h5::write_attribute(g, "note." + k, v);
   for (const auto& [k, v] : r.series) h5::write_series(g, k, v);
   for (const auto& [k, v] : r.matrices) h5::write_matrix(g, k, v);

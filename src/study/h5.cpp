@@ -100,8 +100,10 @@ Handle::~Handle() {
   if (id_ >= 0 && close_) close_(id_);
 }
 
-Handle create_file(const std::string& path) {
-  return Handle(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose, "create " + path);
+Handle create_file(const std::string& path, std::size_t userblock) {
+  Handle fcpl(H5Pcreate(H5P_FILE_CREATE), H5Pclose, "file creation plist");
+  if (userblock > 0) check(H5Pset_userblock(fcpl.id(), userblock), "set user block");
+  return Handle(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, fcpl.id(), H5P_DEFAULT), H5Fclose, "create " + path);
 }
 
 Handle open_file(const std::string& path, bool writable) {

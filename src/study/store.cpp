@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
+#include <string_view>
 
 #include "dpdrng/common/error.hpp"
 
@@ -40,8 +42,54 @@ std::vector<fs::path> cell_files(const fs::path& dir) {
   return files;
 }
 
-// Reads a whole cell file, checking that it belongs to the config with `hash`; throws with the reason.
+// Every cell file starts with a 512-byte HDF5 user block holding a checksum of the rest, written after HDF5 has
+// closed the file: "dpdrng-cell 1 fnv1a64 <16 hex digits> <bytes>\n", then zeros. HDF5 skips the block (h5py and
+// h5dump read the file as usual). A file is handed to HDF5 only once its bytes match: HDF5's own parser is not
+// robust against damaged files (a flipped length in a string heap made it copy 21 GB), and a file damaged on
+// disk must be "unreadable", not a crash.
+constexpr std::size_t kSealBytes = 512;
+constexpr std::string_view kSealMagic = "dpdrng-cell 1 fnv1a64 ";
+
+std::string read_bytes(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot open it");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string seal_of(std::string_view payload) {
+  std::string seal = std::string(kSealMagic) + fnv1a64_hex(std::string(payload)) + " " +
+                     std::to_string(payload.size()) + "\n";
+  seal.resize(kSealBytes, '\0');
+  return seal;
+}
+
+void seal_file(const fs::path& p) {
+  const std::string bytes = read_bytes(p);
+  if (bytes.size() <= kSealBytes) throw OutputError(p.string() + ": HDF5 wrote no data after the checksum block");
+  std::fstream f(p, std::ios::binary | std::ios::in | std::ios::out);
+  f.write(seal_of(std::string_view(bytes).substr(kSealBytes)).data(), static_cast<std::streamsize>(kSealBytes));
+  if (!f.flush()) throw OutputError(p.string() + ": cannot write its checksum block");
+}
+
+// Throws with the reason when the file's bytes do not match its checksum block.
+void check_seal(const fs::path& p) {
+  const std::string bytes = read_bytes(p);
+  if (bytes.size() < kSealBytes || bytes.compare(0, kSealMagic.size(), kSealMagic) != 0)
+    throw std::runtime_error(bytes.size() >= 8 && bytes.compare(0, 4, "\x89HDF") == 0
+                                 ? "no checksum block: written by an older dpdrng, or not by dpdrng"
+                                 : "not a dpdrng cell file");
+  const std::string_view payload = std::string_view(bytes).substr(kSealBytes);
+  if (bytes.compare(0, kSealBytes, seal_of(payload)) != 0)
+    throw std::runtime_error("its bytes do not match its checksum (cut short, extended or altered after it was "
+                             "written)");
+}
+
+// Reads a whole cell file, checking its checksum and that it belongs to the config with `hash`; throws with the
+// reason.
 CellResult read_cell_file(const fs::path& p, const std::string& hash) {
+  check_seal(p);
   h5::Handle f = h5::open_file(p.string());
   const auto attrs = h5::read_attributes(f.id());
   const auto it = attrs.find("config_hash");
@@ -128,25 +176,26 @@ void Store::save(const CellResult& r) {
   try {
     {
       std::lock_guard lk(h5::lock());
-      h5::Handle f = h5::create_file(tmp.string());
+      h5::Handle f = h5::create_file(tmp.string(), kSealBytes);
       h5::write_attribute(f.id(), "config_hash", stored_hash());
       h5::Handle g = h5::create_group(f.id(), "cell");
       write_cell(g.id(), r);
     }
+    seal_file(tmp);
     sync_file(tmp);
     fs::rename(tmp, p);
-  } catch (const OutputError&) {
-    throw;
   } catch (const std::exception& e) {
+    std::error_code ec;
+    fs::remove(tmp, ec);  // a half-written temporary is no use to anyone
+    if (dynamic_cast<const OutputError*>(&e)) throw;
+    if (dynamic_cast<const std::invalid_argument*>(&e)) throw;
     throw OutputError(p.string() + ": " + e.what());
   }
 }
 
 CellResult Store::load(const Cell& cell) const {
   std::lock_guard lk(h5::lock());
-  h5::Handle f = h5::open_file(cell_path(cell).string());
-  h5::Handle g = h5::open_group(f.id(), "cell");
-  return read_cell(g.id());
+  return read_cell_file(cell_path(cell), stored_hash());
 }
 
 std::vector<CellResult> Store::load_all(std::vector<UnreadableCell>* unreadable) const {
@@ -186,6 +235,7 @@ std::size_t Store::assemble(const StudyConfig& config) const {
     h5::Handle cells = h5::create_group(dst.id(), "cells");
     for (const auto& p : files) {
       try {
+        check_seal(p);
         h5::Handle src = h5::open_file(p.string());
         const auto attrs = h5::read_attributes(src.id());
         auto it = attrs.find("config_hash");

@@ -42,7 +42,8 @@ struct Matrix {
   std::vector<double> data;  // row-major
 };
 
-Handle create_file(const std::string& path);  // truncates
+// Truncates. A user block (0, or a power of two >= 512) is space before the HDF5 data that HDF5 leaves alone.
+Handle create_file(const std::string& path, std::size_t userblock = 0);
 Handle open_file(const std::string& path, bool writable = false);
 Handle create_group(hid_t parent, const std::string& name);
 Handle open_group(hid_t parent, const std::string& name);
