@@ -42,7 +42,8 @@ TEST(BadInputDoc, EveryRowNamesAnExistingTestAndEveryBadInputTestHasARow) {
     EXPECT_GT(here, 0u) << "a row without a test: " << line;
   }
   EXPECT_GT(rows, 20u);
-  for (const auto& t : tests) {
-    if (t.rfind("BadInput.", 0) == 0) EXPECT_TRUE(in_doc.count(t)) << t << " has no row in docs/bad-input.md";
-  }
+  for (const auto& t : tests)
+    if (t.rfind("BadInput.", 0) == 0) {
+      EXPECT_TRUE(in_doc.count(t)) << t << " has no row in docs/bad-input.md";
+    }
 }

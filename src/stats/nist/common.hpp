@@ -20,6 +20,9 @@ inline double igamc(double a, double x) {
 }
 
 inline double erfc(double x) {
+  // GSL gives NaN at +inf (Runs on a constant sequence of at most 16 bits divides by pi(1 - pi) = 0); the
+  // reference's cephes_erfc underflows to 0 there.
+  if (std::isinf(x)) return x > 0 ? 0.0 : 2.0;
   gsl_sf_result r;
   if (gsl_sf_erfc_e(x, &r) != 0) return x > 0 ? 0.0 : 2.0;
   return r.val;

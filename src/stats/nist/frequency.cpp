@@ -66,7 +66,10 @@ struct ByteWalk {
 const ByteWalk kByteWalk;
 
 // sts-2.1.2's cusum p-value, kept with its C integer divisions (truncation toward zero), see the header.
+// Every non-empty walk reaches |S| = 1, so z = 1 has P = 1 exactly; the reference's truncated sums give up to
+// 1.10 there (n <= 52), which is no probability.
 double cusum_p(long n, long z) {
+  if (z <= 1) return 1.0;
   const double sn = std::sqrt(static_cast<double>(n));
   double sum1 = 0, sum2 = 0;
   for (long k = (-n / z + 1) / 4; k <= (n / z - 1) / 4; ++k)
