@@ -67,9 +67,16 @@ inline auto fma(A a, B b, C c) {
 
 using Table = std::array<float, 16>;
 inline float lookup(const Table& t, std::uint32_t i) { return t[i & 15u]; }
-// __builtin_shuffle takes the index modulo 16, as the scalar lookup does.
+// __builtin_shuffle takes the index modulo 16, as the scalar lookup does. Clang (the fuzz build) has no
+// run-time shuffle builtin: there the same lookup runs lane by lane.
 inline simd::f32x16 lookup(const Table& t, simd::u32x16 i) {
+#if defined(__clang__)
+  simd::f32x16 r;
+  for (int k = 0; k < 16; ++k) r[k] = t[i[k] & 15u];
+  return r;
+#else
   return __builtin_shuffle(simd::load<simd::f32x16>(t.data()), i);
+#endif
 }
 
 // Long double helpers for the constexpr tables below (std::log is not constexpr).
