@@ -284,3 +284,37 @@ TEST(StudyStore, UnreadableCellFilesAreNamedWithTheirReason) {
   EXPECT_EQ(store.load_all(&bad).size(), n);
   EXPECT_TRUE(bad.empty());
 }
+
+// Fuzzing found HDF5's parser copying 21 GB out of a cell file with one damaged length (memcpy-param-overlap in
+// H5HG_read): a file whose bytes differ from its checksum block is unreadable before HDF5 sees it.
+TEST(StudyStore, AlteredCellFileNeverReachesHdf5) {
+  TempDir tmp;
+  const StudyConfig cfg = parse_config(kConfig, "c.toml");
+  Store store(tmp.path);
+  store.open_for(cfg);
+  CellResult r;
+  r.cell = enumerate_cells(cfg)[0];
+  r.reason = std::string(300, 'x');
+  store.save(r);
+  const fs::path p = store.cell_path(r.cell);
+  std::string bytes;
+  {
+    std::ifstream in(p, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  ASSERT_EQ(bytes.compare(0, 22, "dpdrng-cell 1 fnv1a64 "), 0);
+  std::string why;
+  for (const std::size_t at : {std::size_t{600}, bytes.size() / 2, bytes.size() - 1}) {
+    std::string flipped = bytes;
+    flipped[at] = static_cast<char>(flipped[at] ^ 0x10);
+    std::ofstream(p, std::ios::binary | std::ios::trunc) << flipped;
+    EXPECT_EQ(store.state(r.cell, &why), Store::State::unreadable) << at;
+    EXPECT_NE(why.find("do not match its checksum"), std::string::npos) << why;
+  }
+  // The same file without its block, as an earlier dpdrng wrote it: HDF5 would read it, the store does not.
+  std::ofstream(p, std::ios::binary | std::ios::trunc) << bytes.substr(512);
+  EXPECT_EQ(store.state(r.cell, &why), Store::State::unreadable);
+  EXPECT_NE(why.find("no checksum block"), std::string::npos) << why;
+  std::ofstream(p, std::ios::binary | std::ios::trunc) << bytes;
+  EXPECT_EQ(store.state(r.cell), Store::State::stored);
+}
