@@ -44,7 +44,8 @@ struct ChunkOptions {
     app.add_option("--per", per, "split the input into chunks of N values, test each, report the pass fraction")
         ->check(CLI::PositiveNumber);
     app.add_option("--confidence", confidence,
-                   "level of the pass fraction's Clopper-Pearson interval (1 - level: the binomial test's level)")
+                   "level of the pass fraction's central Clopper-Pearson interval; 1 - level is the level of the "
+                   "central binomial test, p = 2 min(P[X <= k], P[X >= k]), which agrees with that interval")
         ->check(CLI::Range(0.0, 1.0))
         ->capture_default_str();
   }
