@@ -110,21 +110,31 @@ std::vector<double> values_of(const std::vector<const CellResult*>& cells, const
   return v;
 }
 
-Comparison compare_scalar(const ScalarSpec& spec, const VariantReport& v, const VariantReport& ref) {
-  Comparison c;
-  c.observable = spec.name;
-  const auto x = values_of(v.cells, spec.name), y = values_of(ref.cells, spec.name);
+namespace {
+
+// The replicas' means and spreads on both sides; false, with the reason in the note, when a side has none.
+bool describe(Comparison& c, const std::vector<double>& x, const std::vector<double>& y) {
   c.n = x.size();
   c.n_ref = y.size();
   if (x.empty() || y.empty()) {
     c.note = x.empty() ? "not measured" : "no reference data";
-    return c;
+    return false;
   }
   c.available = true;
   c.value = stats::mean(x);
   c.value_sd = stats::sample_sd(x);
   c.ref = stats::mean(y);
   c.ref_sd = stats::sample_sd(y);
+  return true;
+}
+
+}  // namespace
+
+Comparison compare_scalar(const ScalarSpec& spec, const VariantReport& v, const VariantReport& ref) {
+  Comparison c;
+  c.observable = spec.name;
+  const auto x = values_of(v.cells, spec.name), y = values_of(ref.cells, spec.name);
+  if (!describe(c, x, y)) return c;
   const double scale = spec.absolute ? 1.0 : std::abs(c.ref);
   c.error_rate = std::abs(c.value - c.ref) / scale;
   std::vector<stats::VarianceEstimate> runs;
@@ -138,19 +148,8 @@ Comparison compare_paired(const std::string& base, const VariantReport& v, const
   Comparison c;
   c.observable = base;
   const std::string name = base + "_mean", sem = base + "_sem";
-  const auto x = values_of(v.cells, name), y = values_of(ref.cells, name);
-  c.n = x.size();
-  c.n_ref = y.size();
-  if (x.empty() || y.empty()) {
-    c.note = x.empty() ? "not measured" : "no reference data";
-    return c;
-  }
-  c.available = true;
+  if (!describe(c, values_of(v.cells, name), values_of(ref.cells, name))) return c;
   c.paired = true;
-  c.value = stats::mean(x);
-  c.value_sd = stats::sample_sd(x);
-  c.ref = stats::mean(y);
-  c.ref_sd = stats::sample_sd(y);
   c.error_rate = std::abs(c.value - c.ref);
   // A difference's variance is the sum of its two runs' (their noise is independent), with Satterthwaite's
   // degrees of freedom for a sum of two estimates.

@@ -86,12 +86,9 @@ TEST(RunErrors, ShortSeriesUseIndependentSampleErrors) {
 // velocity density have equal blocks of samples here, the MSD's bead groups hold 12 or 13 beads. A sample in two
 // blocks, or a curve normalised by the wrong count, breaks it.
 TEST(RunErrors, JackknifeCurvesAreLeaveOneOutSets) {
-  WaterConfig cfg;
-  cfg.particles = 256;
-  cfg.steps = 420;
-  cfg.equilibrate = 20;
+  WaterConfig cfg;  // the paper's scene, 400 production steps
+  cfg.steps = 420, cfg.equilibrate = 20, cfg.threads = 1;
   cfg.generator = rng::validated({"philox4x32", 10});
-  cfg.threads = 1;
   const RunResult r = run_water(cfg);
   ASSERT_TRUE(r.ok()) << r.status;
   ASSERT_EQ(r.rdf.jackknife.size(), kStatBlocks);
