@@ -188,9 +188,11 @@ std::vector<std::string> write_charts(const Analysis& a, const std::vector<CellR
     Chart temp{"temperature_vs_rounds_" + dist, "Mean temperature ± replica s.d. (" + dist + ")", "rounds",
                "k_BT (kinetic)", true, false, "", {}, false};
     // The verdict's own evidence: −log₁₀ of the smallest corrected P-value, so that a point lies above the α
-    // line exactly when its verdict says "differs". Log axis; P-values above 0.98 sit on the floor at 0.01.
+    // line exactly when its verdict says "differs". Log axis: P-values above 0.98 sit on the floor at 0.01,
+    // those below 1e-300 (or 0) at 300.
     Chart speed{"speed_vs_accuracy_" + dist, "Speed against evidence of a difference from MT (" + dist + ")",
-                "ms per DPD step (cost)", "-log10(smallest corrected p), log scale", false, true,
+                "ms per DPD step (cost)", "-log10(smallest corrected p) (log scale, clipped to [0.01, 300])",
+                false, true,
                 "set offsets graph 0.05, graph 0.15, graph 0.1, graph 0.1\nset yrange [0.01:*]\n", {}, false};
     if (ref) {
       cost.extra += hline(ref->ns_per_number, ref->key.label(), "black");
