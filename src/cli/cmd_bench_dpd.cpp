@@ -18,6 +18,7 @@
 #include "dpdrng/cli/registry.hpp"
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/dpd/water.hpp"
+#include "dpdrng/stats/summary.hpp"
 
 namespace dpdrng::cli {
 namespace {
@@ -83,10 +84,7 @@ dpd::Timings run_once(const Case& k) {
   return res.timings;
 }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
+using stats::median;
 
 Measured summarise(const Case& k, const std::vector<double>& t, double share) {
   Measured m;

@@ -22,6 +22,7 @@
 #include "dpdrng/cli/registry.hpp"
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/rng/stream.hpp"
+#include "dpdrng/stats/summary.hpp"
 
 namespace dpdrng::cli {
 namespace {
@@ -206,11 +207,7 @@ class Collector : public benchmark::BenchmarkReporter {
   bool progress_ = isatty(STDERR_FILENO) != 0;  // a progress counter for people, not for log files
 };
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
+using stats::median;
 
 std::string utc_now() {
   const std::time_t t = std::time(nullptr);

@@ -43,7 +43,8 @@ struct ChunkOptions {
     add_integer(app, "--per", per, "split the input into chunks of N values, test each, report the pass fraction",
                 {1, std::numeric_limits<std::size_t>::max()});
     add_real(app, "--confidence", confidence,
-             "level of the pass fraction's Clopper-Pearson interval (1 - level: the binomial test's level)",
+             "level of the pass fraction's central Clopper-Pearson interval; 1 - level is the level of the central "
+             "binomial test, p = 2 min(P[X <= k], P[X >= k]), which agrees with that interval",
              {0, 1, true, true});
   }
 };

@@ -144,6 +144,7 @@ Stat ProfileAccumulator::thickness() const {
     for (double x : per_block) v += (x - m) * (x - m);
     st.std = std::sqrt(v / double(per_block.size() - 1));
     st.sem = st.std / std::sqrt(double(per_block.size()));
+    st.sem_dof = double(per_block.size()) - 1.0;
   }
   return st;
 }

@@ -8,20 +8,66 @@
 
 namespace dpdrng::dpd {
 
-void VelocityHistogram::sample(const System& s) {
+void VelocityHistogram::sample(const System& s, int block) {
   const std::vector<double>* v[3] = {&s.vx, &s.vy, &s.vz};
-  for (int c = 0; c < 3; ++c)
+  for (int c = 0; c < 3; ++c) {
+    auto& counts = counts_[std::size_t(block) * 3 + std::size_t(c)];
     for (double u : *v[c]) {
       const double b = std::floor((u - lo_) / w_);
-      if (b >= 0 && b < bins_) ++counts_[c][static_cast<std::size_t>(b)];
+      if (b >= 0 && b < bins_) ++counts[static_cast<std::size_t>(b)];
     }
-  samples_ += s.size();
+  }
+  block_samples_[std::size_t(block)] += s.size();
 }
+
+namespace {
+
+// The paper's error rate, the mean of |P − P_th| / P_th over the bins where MB at k_BT (mb_kT) has probability
+// mass ≥ 1e-3, per component and pooled, of densities P = counts / (samples · w) against the bin-averaged MB
+// densities mb.
+struct ErrorRates {
+  std::array<double, 3> per_component{};
+  double pooled = 0;
+};
+ErrorRates error_rates(const std::array<std::vector<double>, 3>& pdf, const std::vector<double>& mb,
+                       const std::vector<double>& mb_kT, double w) {
+  ErrorRates e;
+  for (int c = 0; c < 3; ++c) {
+    double sum = 0;
+    int used = 0;
+    for (std::size_t b = 0; b < mb.size(); ++b) {
+      if (mb_kT[b] * w < 1e-3) continue;
+      sum += std::abs(pdf[c][b] - mb[b]) / mb[b];
+      ++used;
+    }
+    e.per_component[c] = used ? sum / used : 0;
+    e.pooled += e.per_component[c] / 3;
+  }
+  return e;
+}
+
+std::array<std::vector<double>, 3> densities(const std::array<std::vector<std::uint64_t>, 3>& counts,
+                                             std::size_t samples, double w) {
+  std::array<std::vector<double>, 3> pdf;
+  for (int c = 0; c < 3; ++c)
+    for (const std::uint64_t n : counts[c]) pdf[c].push_back(n / (double(samples) * w));
+  return pdf;
+}
+
+}  // namespace
 
 VelocityPdf VelocityHistogram::finish(double kT, double measured_kT) const {
   VelocityPdf out;
-  out.samples = samples_;
-  if (samples_ == 0) return out;
+  std::array<std::vector<std::uint64_t>, 3> total;
+  for (auto& t : total) t.assign(std::size_t(bins_), 0);
+  std::size_t samples = 0;
+  for (std::size_t blk = 0; blk < std::size_t(blocks_); ++blk) {
+    samples += block_samples_[blk];
+    for (std::size_t c = 0; c < 3; ++c)
+      for (std::size_t b = 0; b < std::size_t(bins_); ++b) total[c][b] += counts_[blk * 3 + c][b];
+  }
+  out.samples = samples;
+  if (samples == 0) return out;
   // Bin-averaged MB density: the exact probability of the bin over its width (no midpoint error).
   auto mb = [&](double a, double b, double t) {
     const double k = 1.0 / std::sqrt(2.0 * t);
@@ -33,26 +79,42 @@ VelocityPdf VelocityHistogram::finish(double kT, double measured_kT) const {
     out.mb_kT.push_back(mb(a, e, kT));
     out.mb_measured.push_back(mb(a, e, measured_kT));
   }
-  double pooled_kT = 0, pooled_meas = 0;
-  for (int c = 0; c < 3; ++c) {
-    double sum_kT = 0, sum_meas = 0;
-    int used = 0;
-    for (int b = 0; b < bins_; ++b) {
-      const double p = counts_[c][b] / (double(samples_) * w_);
-      out.pdf[c].push_back(p);
-      if (out.mb_kT[b] * w_ < 1e-3) continue;
-      sum_kT += std::abs(p - out.mb_kT[b]) / out.mb_kT[b];
-      sum_meas += std::abs(p - out.mb_measured[b]) / out.mb_measured[b];
-      ++used;
-    }
-    out.error_rate_kT[c] = used ? sum_kT / used : 0;
-    out.error_rate_measured[c] = used ? sum_meas / used : 0;
-    pooled_kT += out.error_rate_kT[c] / 3;
-    pooled_meas += out.error_rate_measured[c] / 3;
-  }
-  out.error_rate_kT_mean = pooled_kT;
-  out.error_rate_measured_mean = pooled_meas;
+  out.pdf = densities(total, samples, w_);
+  const ErrorRates at_kT = error_rates(out.pdf, out.mb_kT, out.mb_kT, w_);
+  const ErrorRates at_measured = error_rates(out.pdf, out.mb_measured, out.mb_kT, w_);
+  out.error_rate_kT = at_kT.per_component;
+  out.error_rate_measured = at_measured.per_component;
+  out.error_rate_kT_mean = at_kT.pooled;
+  out.error_rate_measured_mean = at_measured.pooled;
+  jackknife(total, samples, out);
   return out;
+}
+
+// Leave-one-block-out error rates (var = (B − 1)/B Σ (θ_b − θ̄)² over the B blocks that hold samples) and the
+// pooled density of each leave-one-block-out histogram.
+void VelocityHistogram::jackknife(const std::array<std::vector<std::uint64_t>, 3>& total, std::size_t samples,
+                                  VelocityPdf& out) const {
+  std::vector<double> theta;
+  for (std::size_t blk = 0; blk < std::size_t(blocks_); ++blk) {
+    if (block_samples_[blk] == 0 || block_samples_[blk] == samples) continue;
+    auto rest = total;
+    for (std::size_t c = 0; c < 3; ++c)
+      for (std::size_t b = 0; b < std::size_t(bins_); ++b) rest[c][b] -= counts_[blk * 3 + c][b];
+    const auto pdf = densities(rest, samples - block_samples_[blk], w_);
+    theta.push_back(error_rates(pdf, out.mb_kT, out.mb_kT, w_).pooled);
+    std::vector<double> pooled(pdf[0].size());
+    for (std::size_t k = 0; k < pooled.size(); ++k) pooled[k] = (pdf[0][k] + pdf[1][k] + pdf[2][k]) / 3.0;
+    out.jackknife.push_back(std::move(pooled));
+  }
+  out.error_rate_kT_mean_sem_dof = double(theta.size()) - 1.0;
+  if (theta.size() < 2) {
+    out.error_rate_kT_mean_sem = NAN;
+    return;
+  }
+  double m = 0, v = 0;
+  for (const double t : theta) m += t / double(theta.size());
+  for (const double t : theta) v += (t - m) * (t - m);
+  out.error_rate_kT_mean_sem = std::sqrt(v * double(theta.size() - 1) / double(theta.size()));
 }
 
 void MsdRecorder::sample(const System& s) {
@@ -82,23 +144,33 @@ Msd MsdRecorder::finish() const {
   const std::size_t nf = frames_.size();
   if (nf < 8) return out;
   const std::size_t lmax = nf / 2;
-  // Every frame up to 400 origins; origins fall into 4 quarters for an error estimate of D.
+  // Every frame up to 400 origins. The beads fall into kStatBlocks groups; leaving one group out at a time
+  // gives D a jackknife error, and the MSD curve a jackknife covariance.
   const std::size_t stride = std::max<std::size_t>(1, (nf - 1) / 400);
-  std::vector<double> sum(lmax + 1, 0), qsum[4];
-  std::vector<std::size_t> cnt(lmax + 1, 0), qcnt[4];
-  for (int q = 0; q < 4; ++q) qsum[q].assign(lmax + 1, 0), qcnt[q].assign(lmax + 1, 0);
+  const std::size_t groups = std::min(kStatBlocks, n_);
+  std::vector<std::size_t> first(groups + 1);
+  for (std::size_t g = 0; g <= groups; ++g) first[g] = g * n_ / groups;
+  std::vector<double> sum(lmax + 1, 0), raw(lmax + 1, 0);
+  std::vector<std::vector<double>> gsum(groups, std::vector<double>(lmax + 1, 0));
+  std::vector<std::size_t> cnt(lmax + 1, 0);
   const std::size_t norigins = (nf - 1) / stride + 1;
   for (std::size_t o = 0; o < norigins; ++o) {
     const std::size_t t0 = o * stride;
-    const int q = static_cast<int>(4 * o / norigins);
     const auto& a = frames_[t0];
     for (std::size_t l = 1; l <= lmax && t0 + l < nf; ++l) {
       const auto& b = frames_[t0 + l];
       double d2 = 0;
-      for (std::size_t k = 0; k < 3 * n_; ++k) d2 += (b[k] - a[k]) * (b[k] - a[k]);
+      for (std::size_t g = 0; g < groups; ++g) {
+        double dg = 0;
+        for (std::size_t k = 3 * first[g]; k < 3 * first[g + 1]; ++k) {
+          const double x = (b[k] - a[k]) * (b[k] - a[k]);
+          d2 += x, dg += x;
+        }
+        gsum[g][l] += dg;
+      }
+      raw[l] += d2;
       d2 /= double(n_);
       sum[l] += d2, ++cnt[l];
-      qsum[q][l] += d2, ++qcnt[q][l];
     }
   }
   out.tau.push_back(0), out.msd.push_back(0);
@@ -110,23 +182,21 @@ Msd MsdRecorder::finish() const {
   const std::size_t lo = std::max<std::size_t>(1, lmax / 10), hi = lmax + 1;
   out.fit_from = out.tau[lo], out.fit_to = out.tau[lmax];
   out.diffusion = slope(out.tau, out.msd, lo, hi) / 6.0;
-  double m = 0, m2 = 0;
-  int used = 0;
-  for (int q = 0; q < 4; ++q) {
+  if (groups < 2) return out;
+  std::vector<double> d(groups);
+  double m = 0;
+  for (std::size_t g = 0; g < groups; ++g) {
+    const double beads = double(n_ - (first[g + 1] - first[g]));
     std::vector<double> y(lmax + 1, 0);
-    bool full = true;
-    for (std::size_t l = lo; l <= lmax; ++l) {
-      if (!qcnt[q][l]) full = false;
-      y[l] = qcnt[q][l] ? qsum[q][l] / qcnt[q][l] : 0;
-    }
-    if (!full) continue;
-    const double d = slope(out.tau, y, lo, hi) / 6.0;
-    m += d, m2 += d * d, ++used;
+    for (std::size_t l = 1; l <= lmax; ++l) y[l] = cnt[l] ? (raw[l] - gsum[g][l]) / (beads * double(cnt[l])) : 0;
+    d[g] = slope(out.tau, y, lo, hi) / 6.0;
+    m += d[g] / double(groups);
+    out.jackknife.push_back(std::move(y));
   }
-  if (used > 1) {
-    m /= used;
-    out.diffusion_sem = std::sqrt(std::max(0.0, (m2 / used - m * m) * used / (used - 1)) / used);
-  }
+  double v = 0;
+  for (const double x : d) v += (x - m) * (x - m);
+  out.diffusion_sem = std::sqrt(v * double(groups - 1) / double(groups));
+  out.diffusion_sem_dof = double(groups) - 1.0;
   return out;
 }
 
@@ -146,7 +216,7 @@ void for_partners(const System& s, const CellGrid& grid, std::size_t i, F&& f) {
 }
 }  // namespace
 
-void RdfHistogram::sample(const System& s) {
+void RdfHistogram::sample(const System& s, int block) {
   const double Lx = s.box.L[0], Ly = s.box.L[1], Lz = s.box.L[2];
   const double r2max = rmax_ * rmax_, inv_dr = bins_ / rmax_;
   CellGrid grid;
@@ -154,7 +224,7 @@ void RdfHistogram::sample(const System& s) {
   const std::int64_t n = static_cast<std::int64_t>(s.size());
 #pragma omp parallel num_threads(threads_) if (grid.usable())
   {
-    std::vector<std::uint64_t> mine(counts_.size(), 0);
+    std::vector<std::uint64_t> mine(std::size_t(bins_), 0);
 #pragma omp for schedule(dynamic, 256)
     for (std::int64_t q = 0; q < n; ++q) {
       const std::size_t i = static_cast<std::size_t>(q);
@@ -166,22 +236,42 @@ void RdfHistogram::sample(const System& s) {
       });
     }
 #pragma omp critical(dpdrng_rdf)
-    for (std::size_t b = 0; b < mine.size(); ++b) counts_[b] += mine[b];
+    for (std::size_t b = 0; b < mine.size(); ++b) counts_[std::size_t(block)][b] += mine[b];
   }
-  ++samples_;
+  ++block_samples_[std::size_t(block)];
+}
+
+std::vector<double> RdfHistogram::g_of(const std::vector<std::uint64_t>& counts, std::size_t samples,
+                                       const System& s) const {
+  const double n = double(s.size()), dr = rmax_ / bins_;
+  const double pair_density = n * (n - 1) / 2 / s.box.volume();
+  std::vector<double> g;
+  for (int b = 0; b < bins_; ++b) {
+    const double r0 = b * dr, r1 = r0 + dr;
+    const double shell = 4.0 / 3.0 * std::numbers::pi * (r1 * r1 * r1 - r0 * r0 * r0);
+    g.push_back(counts[std::size_t(b)] / (samples * pair_density * shell));
+  }
+  return g;
 }
 
 Rdf RdfHistogram::finish(const System& s) const {
   Rdf out;
-  out.samples = samples_;
-  if (samples_ == 0) return out;
-  const double n = double(s.size()), dr = rmax_ / bins_;
-  const double pair_density = n * (n - 1) / 2 / s.box.volume();
-  for (int b = 0; b < bins_; ++b) {
-    const double r0 = b * dr, r1 = r0 + dr;
-    const double shell = 4.0 / 3.0 * std::numbers::pi * (r1 * r1 * r1 - r0 * r0 * r0);
-    out.r.push_back(r0 + 0.5 * dr);
-    out.g.push_back(counts_[b] / (samples_ * pair_density * shell));
+  std::vector<std::uint64_t> total(std::size_t(bins_), 0);
+  std::size_t samples = 0;
+  for (std::size_t blk = 0; blk < counts_.size(); ++blk) {
+    samples += block_samples_[blk];
+    for (std::size_t b = 0; b < total.size(); ++b) total[b] += counts_[blk][b];
+  }
+  out.samples = samples;
+  if (samples == 0) return out;
+  const double dr = rmax_ / bins_;
+  for (int b = 0; b < bins_; ++b) out.r.push_back(b * dr + 0.5 * dr);
+  out.g = g_of(total, samples, s);
+  for (std::size_t blk = 0; blk < counts_.size(); ++blk) {
+    if (block_samples_[blk] == 0 || block_samples_[blk] == samples) continue;
+    auto rest = total;
+    for (std::size_t b = 0; b < rest.size(); ++b) rest[b] -= counts_[blk][b];
+    out.jackknife.push_back(g_of(rest, samples - block_samples_[blk], s));
   }
   return out;
 }

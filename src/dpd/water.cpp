@@ -91,9 +91,13 @@ RunResult run_water(const WaterConfig& in, const RunHooks& hooks) {
   int msd_every = cfg.msd_every > 0 ? cfg.msd_every : cfg.sample_every;
   const std::size_t max_frames = std::max<std::size_t>(1, (std::size_t{1} << 24) / (3 * n));
   msd_every = static_cast<int>(std::max<std::int64_t>(msd_every, (production + max_frames - 1) / max_frames));
-  VelocityHistogram vpdf(cfg.vpdf_bins, cfg.vpdf_range * std::sqrt(cfg.kT));
+  VelocityHistogram vpdf(cfg.vpdf_bins, cfg.vpdf_range * std::sqrt(cfg.kT), int(kStatBlocks));
+  // The velocity and g(r) samples fall into kStatBlocks consecutive blocks, for their jackknife errors.
+  const auto blocks = static_cast<std::int64_t>(kStatBlocks);
+  const std::int64_t vpdf_samples = std::max<std::int64_t>(1, (production + cfg.sample_every - 1) / cfg.sample_every);
   MsdRecorder msd(n, msd_every * cfg.dt, max_frames);
-  RdfHistogram rdf(cfg.rdf_bins, std::min(cfg.rdf_rmax, L / 2), cfg.threads);
+  RdfHistogram rdf(cfg.rdf_bins, std::min(cfg.rdf_rmax, L / 2), cfg.threads, int(kStatBlocks));
+  const std::int64_t rdf_samples = std::max<std::int64_t>(1, (production + rdf_every - 1) / rdf_every);
   Samples smp;
 
   const double V = s.box.volume();
@@ -132,8 +136,9 @@ RunResult run_water(const WaterConfig& in, const RunHooks& hooks) {
       for (int a = 0; a < 3; ++a) smp.Pd[a].push_back(Pd[a]), smp.Pcd[a].push_back(Pcd[a]);
       const std::int64_t k = step - cfg.equilibrate - 1;  // 0 at the first production step
       if (cfg.observables) {
-        if (k % cfg.sample_every == 0) vpdf.sample(s);
-        if (k % rdf_every == 0) rdf.sample(s);
+        if (k % cfg.sample_every == 0)
+          vpdf.sample(s, int(std::min(blocks - 1, k / cfg.sample_every * blocks / vpdf_samples)));
+        if (k % rdf_every == 0) rdf.sample(s, int(std::min(blocks - 1, k / rdf_every * blocks / rdf_samples)));
         if (k % msd_every == 0) msd.sample(s);
       }
     }

@@ -1,233 +1,113 @@
 #include "dpdrng/study/analysis.hpp"
 
-#include <gsl/gsl_cdf.h>
-
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
-#include <numeric>
 
+#include "compare.hpp"
 #include "dpdrng/rng/registry.hpp"
+#include "dpdrng/stats/multiple.hpp"
+#include "dpdrng/stats/summary.hpp"
 
 namespace dpdrng::study {
 namespace {
 
-double mean(const std::vector<double>& v) {
-  return v.empty() ? NAN : std::accumulate(v.begin(), v.end(), 0.0) / double(v.size());
-}
-double sd(const std::vector<double>& v) {
-  if (v.size() < 2) return NAN;
-  const double m = mean(v);
-  double s = 0;
-  for (double x : v) s += (x - m) * (x - m);
-  return std::sqrt(s / double(v.size() - 1));
-}
+using detail::CurveSpec;
+using detail::ScalarSpec;
+using detail::values_of;
 
-// Element-wise mean of the curves, skipping `skip` (the left-out replica); empty if no curve is left.
-std::vector<double> mean_curve(const std::vector<const std::vector<double>*>& curves, std::size_t skip) {
-  std::vector<double> out;
-  std::size_t n = 0;
-  for (std::size_t k = 0; k < curves.size(); ++k) {
-    if (k == skip || !curves[k]) continue;
-    if (out.empty()) out.assign(curves[k]->size(), 0.0);
-    if (curves[k]->size() != out.size()) continue;
-    for (std::size_t i = 0; i < out.size(); ++i) out[i] += (*curves[k])[i];
-    ++n;
-  }
-  for (double& x : out) x /= double(n);
-  return out;
-}
-
-struct ScalarObservable {
-  const char* name;
-  bool absolute;  // the observable is itself an error rate: compare by difference, not by ratio
-};
 // What the paper compares (T, the velocity PDF against Maxwell–Boltzmann, D) plus pressure and T's fluctuation.
-constexpr ScalarObservable kScalars[] = {{"temperature_mean", false}, {"temperature_std", false},
-                                         {"pressure_mean", false},    {"diffusion_coefficient", false},
-                                         {"vpdf_error_mb", true}};
-struct CurveObservable {
-  const char* name;
-  const char* series;
-  double threshold;        // bins where the reference is below this are left out (relative errors blow up there)
-  bool relative_threshold; // threshold is a fraction of the reference's maximum
+constexpr ScalarSpec kScalars[] = {{"temperature_mean", "temperature_sem", false},
+                                   {"temperature_std", "temperature_std_sem", false},
+                                   {"pressure_mean", "pressure_sem", false},
+                                   {"diffusion_coefficient", "diffusion_sem", false},
+                                   {"vpdf_error_mb", "vpdf_error_mb_sem", true}};
+// The velocity PDF's tails (below 1 % of its peak) and g(r) inside the core (below 0.1) are counting noise.
+constexpr CurveSpec kCurves[] = {{"vpdf_vs_mt", "vpdf/p", "vpdf/jackknife", 0.01, true, 0.5},
+                                 {"rdf_vs_mt", "rdf/g", "rdf/jackknife", 0.1, false, 0.5},
+                                 {"msd_vs_mt", "msd/msd", "msd/jackknife", 0.0, false, 1.0}};
+// The membrane's structure as curves: bins where the density is below a tenth of its peak (the empty core for
+// water, the bulk water for tails) are left out.
+constexpr CurveSpec kBilayerCurves[] = {{"head_profile_vs_mt", "profile/head", nullptr, 0.1, true, 0.5},
+                                        {"tail_profile_vs_mt", "profile/tail", nullptr, 0.1, true, 0.5},
+                                        {"water_profile_vs_mt", "profile/water", nullptr, 0.1, true, 0.5}};
+
+struct Tested {
+  Decision* decision;
+  std::string what;
 };
-constexpr CurveObservable kCurves[] = {{"vpdf_vs_mt", "vpdf/p", 0.01, true}, {"rdf_vs_mt", "rdf/g", 0.1, false}};
 
-// The membrane's structure as curves: bins where the reference's density is below a tenth of its peak (the
-// empty core for water, the bulk water for tails) are left out.
-constexpr CurveObservable kBilayerCurves[] = {{"head_profile_vs_mt", "profile/head", 0.1, true},
-                                              {"tail_profile_vs_mt", "profile/tail", 0.1, true},
-                                              {"water_profile_vs_mt", "profile/water", 0.1, true}};
-
-std::map<int, double> by_replica(const std::vector<const CellResult*>& cells, const std::string& name) {
-  std::map<int, double> m;
-  for (const auto* c : cells)
-    if (c->has(name) && std::isfinite(c->scalar(name, NAN))) m[c->cell.replica] = c->scalar(name, NAN);
-  return m;
+// Every test of a variant that produced a P-value: the members of its family.
+std::vector<Tested> tests_of(VariantReport& v) {
+  std::vector<Tested> t;
+  for (auto& o : v.observables)
+    if (o.available && o.decision.tested()) t.push_back({&o.decision, o.observable});
+  for (auto& p : v.passes)
+    if (p.available && p.decision.tested()) t.push_back({&p.decision, p.test + "." + p.stream + " pass fraction"});
+  for (auto& c : v.correlations)
+    if (c.available && c.decision.tested())
+      t.push_back({&c.decision, c.what == "pair" ? "ζ correlation across pairs" : "ζ correlation across steps"});
+  return t;
 }
 
-std::vector<double> values_of(const std::vector<const CellResult*>& cells, const std::string& name) {
-  std::vector<double> v;
-  for (const auto* c : cells)
-    if (c->has(name) && std::isfinite(c->scalar(name, NAN))) v.push_back(c->scalar(name, NAN));
-  return v;
-}
-
-// Root mean square of the cells' "<x>_sem" beside a "<x>_mean" (0 when the observable has none).
-double rms_sem(const std::vector<const CellResult*>& cells, const std::string& name) {
-  const std::string suffix = "_mean";
-  if (name.size() <= suffix.size() || name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0) return 0;
-  const auto sem = values_of(cells, name.substr(0, name.size() - suffix.size()) + "_sem");
-  double sum = 0;
-  for (double e : sem) sum += e * e;
-  return sem.empty() ? 0 : std::sqrt(sum / double(sem.size()));
-}
-
-Comparison compare_scalar(const std::string& name, bool absolute, const VariantReport& v, const VariantReport& ref) {
-  Comparison c;
-  c.observable = name;
-  const auto x = values_of(v.cells, name), y = values_of(ref.cells, name);
-  c.n = x.size();
-  c.n_ref = y.size();
-  if (x.empty() || y.empty()) {
-    c.note = x.empty() ? "not measured" : "no reference data";
-    return c;
+void holm(std::vector<Tested>& family, double alpha) {
+  std::vector<double> p;
+  for (const auto& t : family) p.push_back(t.decision->p);
+  const auto adjusted = stats::holm_adjust(p);
+  for (std::size_t k = 0; k < family.size(); ++k) {
+    family[k].decision->p_adjusted = adjusted[k];
+    family[k].decision->differs = adjusted[k] < alpha;
   }
-  c.available = true;
-  c.value = mean(x);
-  c.value_sd = sd(x);
-  c.ref = mean(y);
-  c.ref_sd = sd(y);
-  const double scale = absolute ? 1.0 : std::abs(c.ref);
-  c.error_rate = std::abs(c.value - c.ref) / scale;
-  // The 1σ size of |mean_G − mean_MT| if G were MT, from the MT replicas' spread or, if larger, from the
-  // runs' own block standard errors: four replicas estimate a spread with three degrees of freedom, and an
-  // unlucky small one (it happened: 0.0004 where the runs' SEMs were 0.0025) would inflate every ratio.
-  const double spread = std::max(std::isfinite(c.ref_sd) ? c.ref_sd : 0.0, rms_sem(ref.cells, name));
-  c.noise_floor = spread > 0 ? spread * std::sqrt(1.0 / double(c.n) + 1.0 / double(c.n_ref)) / scale : NAN;
-  c.p_value = welch_p(x, y);
-  if (!std::isfinite(c.p_value)) c.note = "too few replicas for a P-value";
-  return c;
 }
 
-// The water report's scalar comparison in absolute units (a tensionless membrane's Σ is near 0, so ratios mean
-// nothing), with the paired t-test across replicas in place of Welch's: same MT-vs-MT noise floor.
-Comparison compare_paired(const std::string& base, const VariantReport& v, const VariantReport& ref) {
-  const std::string name = base + "_mean";
-  Comparison c = compare_scalar(name, true, v, ref);
-  c.observable = base;
-  if (!c.available) return c;
-  const PairedTest t = paired_test(by_replica(v.cells, name), by_replica(ref.cells, name));
-  c.paired = true;
-  c.n_pairs = t.n;
-  c.diff = t.diff;
-  c.diff_ci = t.ci95;
-  c.p_value = t.p_value;
-  c.note = std::isfinite(t.p_value) ? "" : "too few paired replicas for a P-value";
-  return c;
+// Reference replicas that are missing from the store, unreadable, or failed: without them every comparison
+// against the reference would rest on a different set of initial states, or on none.
+std::string missing_reference(const VariantReport* ref, int replicas, const std::string& name) {
+  std::size_t usable = 0;
+  if (ref) {
+    usable = ref->cells.size();
+    for (const auto* c : ref->broken) usable += c->status == "unstable";
+  }
+  if (usable >= std::size_t(replicas)) return "";
+  return "no reference data (" + name + ": " + std::to_string(std::size_t(replicas) - usable) + " of " +
+         std::to_string(replicas) + " replicas missing, unreadable or failed)";
 }
 
-// Each replica's curve against the mean of the reference replicas other than its own index; the reference's
-// replicas against the others likewise. Both sides then average over the same number of reference curves,
-// so the reference-vs-reference errors are the honest noise floor of the generator-vs-reference ones.
-Comparison compare_curve(const CurveObservable& obs, const VariantReport& v, const VariantReport& ref) {
-  Comparison c;
-  c.observable = obs.name;
-  std::vector<const std::vector<double>*> ref_curves;
-  std::vector<int> ref_rep;
-  for (const auto* r : ref.cells) {
-    ref_curves.push_back(r->find_series(obs.series));
-    ref_rep.push_back(r->cell.replica);
+void compare(VariantReport& v, const VariantReport& ref, bool bilayer) {
+  if (bilayer) {
+    for (const auto& o : bilayer_observables()) v.observables.push_back(detail::compare_paired(o.name, v, ref));
+    for (const auto& c : kBilayerCurves) v.observables.push_back(detail::compare_curve(c, v, ref));
+    return;
   }
-  const auto skip_for = [&](int replica) {
-    for (std::size_t k = 0; k < ref_rep.size(); ++k)
-      if (ref_rep[k] == replica) return k;
-    return ref_rep.size();  // no counterpart: against all reference replicas
-  };
-  const auto err = [&](const std::vector<double>& curve, std::size_t skip) -> double {
-    const auto m = mean_curve(ref_curves, skip);
-    if (m.empty() || m.size() != curve.size()) return NAN;
-    const double thr = obs.relative_threshold ? obs.threshold * *std::max_element(m.begin(), m.end()) : obs.threshold;
-    return curve_error(curve, m, thr);
-  };
-  std::vector<double> x, y;
-  for (const auto* cell : v.cells)
-    if (const auto* s = cell->find_series(obs.series)) {
-      const double e = err(*s, ref.cells.size() > 1 ? skip_for(cell->cell.replica) : ref.cells.size());
-      if (std::isfinite(e)) x.push_back(e);
-    }
-  if (ref.cells.size() > 1)
-    for (std::size_t k = 0; k < ref.cells.size(); ++k)
-      if (ref_curves[k]) {
-        const double e = err(*ref_curves[k], k);
-        if (std::isfinite(e)) y.push_back(e);
-      }
-  c.n = x.size();
-  c.n_ref = y.size();
-  if (x.empty()) {
-    c.note = "not measured";
-    return c;
+  for (const auto& s : kScalars) v.observables.push_back(detail::compare_scalar(s, v, ref));
+  for (const auto& c : kCurves) v.observables.push_back(detail::compare_curve(c, v, ref));
+}
+
+void set_verdict(VariantReport& v, const std::vector<Tested>& tests) {
+  if (v.cells.empty()) {
+    v.verdict = v.broken.empty() ? "no data yet" : "unstable: " + v.broken.front()->reason;
+    return;
   }
-  c.available = true;
-  c.value = c.error_rate = mean(x);
-  c.value_sd = sd(x);
-  c.ref = 0;
-  c.noise_floor = y.empty() ? NAN : mean(y);
-  c.ref_sd = sd(y);
-  c.p_value = welch_p(x, y);
-  if (std::isfinite(c.p_value)) {
-    // One-sided: only a larger deviation than MT's own is a difference.
-    c.p_value = mean(x) > mean(y) ? c.p_value / 2 : 1 - c.p_value / 2;
+  if (!v.no_reference.empty()) {
+    v.verdict = v.no_reference;
+    return;
+  }
+  const Tested* best = nullptr;
+  for (const auto& t : tests)
+    if (!best || t.decision->p_adjusted < best->decision->p_adjusted) best = &t;
+  if (!best) {
+    v.verdict = v.key.reference ? "reference" : "no comparable data";
+    return;
+  }
+  v.min_p = best->decision->p_adjusted;
+  v.min_p_what = best->what;
+  char buf[200];
+  if (best->decision->differs) {
+    std::snprintf(buf, sizeof buf, "differs (p = %.2g: %s)", v.min_p, best->what.c_str());
+    v.verdict = v.key.reference ? std::string("reference; ") + buf : std::string(buf);
   } else {
-    c.note = "too few replicas for a P-value";
+    v.verdict = v.key.reference ? "reference (its own tests pass)" : "indistinguishable from MT at this sample size";
   }
-  return c;
-}
-
-// GSL's gsl_cdf_beta_Pinv gives NaN for some skewed cases (e.g. a = 792, b = 9); bisection on the CDF
-// cannot fail, and 60 halvings reach double precision on [0, 1].
-double beta_quantile(double q, double a, double b) {
-  double lo = 0, hi = 1;
-  for (int k = 0; k < 60; ++k) {
-    const double mid = 0.5 * (lo + hi);
-    (gsl_cdf_beta_P(mid, a, b) < q ? lo : hi) = mid;
-  }
-  return 0.5 * (lo + hi);
-}
-
-void summarise_passes(VariantReport& v, double alpha) {
-  for (const char* test : {"chi2", "ttest"})
-    for (const char* stream : {"x", "a", "b"}) {
-      PassSummary p;
-      p.test = test;
-      p.stream = stream;
-      const std::string base = std::string(test) + "." + stream + ".";
-      for (const auto* c : v.cells)
-        if (c->has(base + "trials")) {
-          p.trials += static_cast<std::size_t>(c->scalar(base + "trials", 0));
-          p.passed += static_cast<std::size_t>(c->scalar(base + "passed", 0));
-          p.available = true;
-        }
-      if (!p.available) continue;
-      p.fraction = p.trials ? double(p.passed) / double(p.trials) : NAN;
-      // Clopper–Pearson 99 % interval and the exact binomial test against 1 − α.
-      const double conf = 0.99;
-      const double lo_q = (1 - conf) / 2;
-      p.ci_low = p.passed == 0 ? 0.0 : beta_quantile(lo_q, double(p.passed), double(p.trials - p.passed + 1));
-      p.ci_high = p.passed == p.trials ? 1.0
-                                       : beta_quantile(1 - lo_q, double(p.passed + 1), double(p.trials - p.passed));
-      const double fails = double(p.trials - p.passed);
-      // Two-sided by doubling the smaller tail (binomial in the failures, success probability α).
-      if (p.trials > 0) {
-        const double lower = gsl_cdf_binomial_P(static_cast<unsigned>(fails), alpha, static_cast<unsigned>(p.trials));
-        const double upper = fails == 0 ? 1.0
-                                        : gsl_cdf_binomial_Q(static_cast<unsigned>(fails) - 1, alpha,
-                                                             static_cast<unsigned>(p.trials));
-        p.binomial_p = std::min(1.0, 2 * std::min(lower, upper));
-      }
-      v.passes.push_back(p);
-    }
+  if (!v.broken.empty()) v.verdict += " [" + std::to_string(v.broken.size()) + " replica(s) unstable/failed]";
 }
 
 void read_nist(VariantReport& v, double alpha) {
@@ -273,6 +153,34 @@ void read_nist(VariantReport& v, double alpha) {
   }
 }
 
+std::vector<VariantReport> group(const StudyConfig& config, const std::vector<CellResult>& cells) {
+  // Variants in sweep order (reference first), whatever order the cells were stored in.
+  std::vector<VariantKey> order;
+  for (const auto& c : enumerate_cells(config)) {
+    const VariantKey k = variant_of(c);
+    if (std::find(order.begin(), order.end(), k) == order.end()) order.push_back(k);
+  }
+  std::stable_partition(order.begin(), order.end(), [](const VariantKey& k) { return k.reference; });
+  std::vector<VariantReport> out;
+  for (const auto& k : order) {
+    VariantReport v;
+    v.key = k;
+    for (const auto& c : cells)
+      if (variant_of(c.cell) == k) (c.status == "ok" ? v.cells : v.broken).push_back(&c);
+    out.push_back(std::move(v));
+  }
+  return out;
+}
+
+void measure(VariantReport& v, double alpha) {
+  v.passes = detail::summarise_passes(v, alpha);
+  v.correlations = detail::summarise_correlations(v);
+  read_nist(v, alpha);
+  v.ns_per_number = stats::mean(values_of(v.cells, "cost.ns_per_number"));
+  v.step_ms = stats::mean(values_of(v.cells, "cost.step_seconds")) * 1e3;
+  v.rng_share = stats::mean(values_of(v.cells, "cost.rng_share"));
+}
+
 }  // namespace
 
 std::string VariantKey::label() const {
@@ -316,40 +224,15 @@ ReplicaMean replica_mean(const std::vector<const CellResult*>& cells, const std:
     if (c->has(name) && std::isfinite(c->scalar(name, NAN))) v.push_back(c->scalar(name, NAN)), only = c;
   r.n = v.size();
   if (v.empty()) return r;
-  r.mean = mean(v);
+  const stats::MeanCI ci = stats::mean_ci(v, 0.95);
+  r.mean = ci.mean;
   if (v.size() >= 2) {
-    r.ci95 = gsl_cdf_tdist_Qinv(0.025, double(v.size() - 1)) * sd(v) / std::sqrt(double(v.size()));
+    r.ci95 = ci.half_width;
   } else if (only->has(sem_name)) {
     r.ci95 = 1.959963984540054 * only->scalar(sem_name, NAN);
     r.from_run_sem = true;
   }
   return r;
-}
-
-PairedTest paired_test(const std::map<int, double>& x, const std::map<int, double>& y) {
-  std::vector<double> d;
-  for (const auto& [rep, v] : x)
-    if (auto it = y.find(rep); it != y.end()) d.push_back(v - it->second);
-  PairedTest t;
-  t.n = d.size();
-  if (d.empty()) return t;
-  t.diff = mean(d);
-  if (d.size() < 2) return t;
-  const double se = sd(d) / std::sqrt(double(d.size()));
-  const double dof = double(d.size() - 1);
-  t.ci95 = gsl_cdf_tdist_Qinv(0.025, dof) * se;
-  t.p_value = se > 0 ? 2 * gsl_cdf_tdist_Q(std::abs(t.diff) / se, dof) : (t.diff == 0 ? 1.0 : 0.0);
-  return t;
-}
-
-double welch_p(const std::vector<double>& x, const std::vector<double>& y) {
-  if (x.size() < 2 || y.size() < 2) return NAN;
-  const double vx = std::pow(sd(x), 2) / double(x.size()), vy = std::pow(sd(y), 2) / double(y.size());
-  if (!(vx + vy > 0)) return mean(x) == mean(y) ? 1.0 : 0.0;
-  const double t = (mean(x) - mean(y)) / std::sqrt(vx + vy);
-  const double dof = (vx + vy) * (vx + vy) /
-                     (vx * vx / double(x.size() - 1) + vy * vy / double(y.size() - 1));
-  return 2 * gsl_cdf_tdist_Q(std::abs(t), dof);
 }
 
 const VariantReport* Analysis::reference_for(const VariantKey& k) const {
@@ -358,76 +241,58 @@ const VariantReport* Analysis::reference_for(const VariantKey& k) const {
   return nullptr;
 }
 
+std::string Analysis::error_control_sentence() const {
+  char buf[400];
+  if (error_control == ErrorControl::study)
+    std::snprintf(buf, sizeof buf,
+                  "Error control: the family-wise error rate is held at α = %g over the whole study (Holm's "
+                  "procedure over all %zu tests of every variant, observables, pass fractions and ζ correlations "
+                  "alike): the chance that a study of generators as good as the reference shows any \"differs\" "
+                  "is at most α.",
+                  alpha, family_size);
+  else
+    std::snprintf(buf, sizeof buf,
+                  "Error control: the family-wise error rate is held at α = %g within each variant (Holm's "
+                  "procedure over each variant's own tests; %zu tests in %zu families): each verdict errs with "
+                  "probability at most α, so a study of %zu variants as good as the reference can show up to "
+                  "%zu × α false \"differs\" on average.",
+                  alpha, family_size, families, families, families);
+  return buf;
+}
+
 Analysis analyse(const StudyConfig& config, const std::vector<CellResult>& cells) {
   Analysis a;
   a.alpha = config.tests.alpha;
+  a.error_control = config.tests.error_control;
   a.bilayer = config.scene.is_bilayer();
-  // Variants in sweep order (reference first), whatever order the cells were stored in.
-  std::vector<VariantKey> order;
-  for (const auto& c : enumerate_cells(config)) {
-    const VariantKey k = variant_of(c);
-    if (std::find(order.begin(), order.end(), k) == order.end()) order.push_back(k);
-  }
-  std::stable_partition(order.begin(), order.end(), [](const VariantKey& k) { return k.reference; });
-  for (const auto& k : order) {
-    VariantReport v;
-    v.key = k;
-    for (const auto& c : cells)
-      if (variant_of(c.cell) == k) (c.status == "ok" ? v.cells : v.broken).push_back(&c);
-    a.variants.push_back(std::move(v));
-  }
+  a.variants = group(config, cells);
+  for (auto& v : a.variants) measure(v, a.alpha);
   for (auto& v : a.variants) {
-    summarise_passes(v, a.alpha);
-    read_nist(v, a.alpha);
-    v.ns_per_number = mean(values_of(v.cells, "cost.ns_per_number"));
-    v.step_ms = mean(values_of(v.cells, "cost.step_seconds")) * 1e3;
-    v.rng_share = mean(values_of(v.cells, "cost.rng_share"));
-  }
-  for (auto& v : a.variants) {
-    if (v.key.reference) continue;
     const VariantReport* ref = a.reference_for(v.key);
-    if (!ref) continue;
-    if (a.bilayer) {
-      for (const auto& o : bilayer_observables()) v.observables.push_back(compare_paired(o.name, v, *ref));
-      for (const auto& c : kBilayerCurves) v.observables.push_back(compare_curve(c, v, *ref));
-      continue;
-    }
-    for (const auto& s : kScalars) v.observables.push_back(compare_scalar(s.name, s.absolute, v, *ref));
-    for (const auto& c : kCurves) v.observables.push_back(compare_curve(c, v, *ref));
+    if (v.key.reference) continue;  // its own tests need no reference
+    v.no_reference = missing_reference(ref, config.replicas, config.reference);
+    if (v.no_reference.empty()) compare(v, *ref, a.bilayer);
   }
-  for (auto& v : a.variants) {
-    if (v.cells.empty()) {
-      v.verdict = v.broken.empty() ? "no data yet" : "unstable: " + v.broken.front()->reason;
-      continue;
-    }
-    // Bonferroni over everything this verdict rests on: each observable and each pass fraction.
-    std::vector<std::pair<double, std::string>> ps;
-    for (const auto& o : v.observables)
-      if (o.available && std::isfinite(o.p_value)) ps.emplace_back(o.p_value, o.observable);
-    for (const auto& p : v.passes)
-      if (p.available && p.trials > 0) ps.emplace_back(p.binomial_p, p.test + "." + p.stream + " pass fraction");
-    double worst = NAN;
-    for (const auto& o : v.observables)
-      if (o.available && o.noise_floor > 0) worst = std::isnan(worst) ? o.error_rate / o.noise_floor
-                                                                      : std::max(worst, o.error_rate / o.noise_floor);
-    v.worst_error_over_floor = worst;
-    if (ps.empty()) {
-      v.verdict = v.key.reference ? "reference" : "no comparable data";
-      continue;
-    }
-    auto it = std::min_element(ps.begin(), ps.end());
-    v.min_p = std::min(1.0, it->first * double(ps.size()));
-    v.min_p_what = it->second;
-    char buf[160];
-    if (v.min_p < a.alpha) {
-      std::snprintf(buf, sizeof buf, "differs (p = %.2g: %s)", v.min_p, it->second.c_str());
-      v.verdict = buf;
+  // The families: a variant without its reference has no verdict, so none of its tests is decided.
+  std::vector<std::vector<Tested>> tests(a.variants.size());
+  std::vector<Tested> study;
+  for (std::size_t k = 0; k < a.variants.size(); ++k) {
+    if (!a.variants[k].no_reference.empty() || a.variants[k].cells.empty()) continue;
+    tests[k] = tests_of(a.variants[k]);
+    if (tests[k].empty()) continue;
+    a.family_size += tests[k].size();
+    if (a.error_control == ErrorControl::variant) {
+      holm(tests[k], a.alpha);
+      ++a.families;
     } else {
-      v.verdict = v.key.reference ? "reference (its own tests pass)" : "indistinguishable from MT at this sample size";
+      study.insert(study.end(), tests[k].begin(), tests[k].end());
     }
-    if (v.key.reference && v.min_p < a.alpha) v.verdict = "reference; " + v.verdict;
-    if (!v.broken.empty()) v.verdict += " [" + std::to_string(v.broken.size()) + " replica(s) unstable/failed]";
   }
+  if (a.error_control == ErrorControl::study) {
+    holm(study, a.alpha);
+    a.families = study.empty() ? 0 : 1;
+  }
+  for (std::size_t k = 0; k < a.variants.size(); ++k) set_verdict(a.variants[k], tests[k]);
   return a;
 }
 

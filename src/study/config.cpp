@@ -225,6 +225,8 @@ std::string fnv1a64_hex(const std::string& text) {
   return buf;
 }
 
+const char* to_string(ErrorControl e) { return e == ErrorControl::study ? "study" : "variant"; }
+
 nlohmann::json StudyConfig::canonical() const {
   // Keys are only ever added for new scenes: a changed canonical form of a water config would change its hash,
   // and existing result directories would refuse to resume or report.
@@ -235,7 +237,7 @@ nlohmann::json StudyConfig::canonical() const {
   if (!scene.is_bilayer()) scene_json["a"] = scene.a;  // the bilayer's a_ij are fixed by the scene
   nlohmann::json gens = nlohmann::json::array();
   for (const auto& g : generators) gens.push_back({{"name", g.name}, {"rounds", g.rounds}, {"seedings", g.seedings}});
-  return {
+  nlohmann::json j = {
       {"name", name},
       {"reference", reference},
       {"replicas", replicas},
@@ -251,6 +253,9 @@ nlohmann::json StudyConfig::canonical() const {
         {"nist_replicas", tests.nist_replicas}}},
       {"cost", {{"numbers", cost.numbers}}},
   };
+  // Present only when it is not the default, so that configs written before the key keep their hash.
+  if (tests.error_control != ErrorControl::study) j["tests"]["error_control"] = to_string(tests.error_control);
+  return j;
 }
 
 StudyConfig parse_config(const std::string& toml_text, const std::string& origin) {
@@ -348,6 +353,13 @@ StudyConfig parse_config(const std::string& toml_text, const std::string& origin
   Section te = top.sub("tests");
   auto& t = c.tests;
   t.alpha = te.num("alpha", t.alpha, 0, 0.5, true);
+  const std::string control = te.str("error_control", to_string(t.error_control));
+  if (control == "study")
+    t.error_control = ErrorControl::study;
+  else if (control == "variant")
+    t.error_control = ErrorControl::variant;
+  else
+    te.fail("error_control", std::string("must be \"study\" or \"variant\", not ").append(control));
   // Bilayer cells measure physics only: the engine taps no raw numbers there, so the generators' own tests
   // default to off and asking for them is an error rather than an empty table.
   if (bilayer) t.chi2_steps = 0, t.ttest_pairs = 0;

@@ -13,6 +13,7 @@ void put(CellResult& out, const std::string& name, const dpd::Stat& s) {
   out.scalars[name + "_mean"] = s.mean;
   out.scalars[name + "_std"] = s.std;
   out.scalars[name + "_sem"] = s.sem;
+  out.scalars[name + "_sem_dof"] = s.sem_dof;
 }
 
 // "disrupted at step 1234: …" / "unstable at step 1234: …" → 1234 (or −1 if the text says no step).

@@ -91,6 +91,21 @@ void record_costs(const dpd::Timings& t, std::int64_t steps_done, CellResult& ou
 
 }  // namespace detail
 
+namespace {
+
+// Leave-one-block-out curves as a blocks × bins matrix (none when there are fewer than two).
+void put_jackknife(const std::vector<std::vector<double>>& curves, const std::string& name, CellResult& out) {
+  if (curves.size() < 2) return;
+  h5::Matrix m{curves.size(), curves.front().size(), {}};
+  for (const auto& c : curves) {
+    if (c.size() != m.cols) return;
+    m.data.insert(m.data.end(), c.begin(), c.end());
+  }
+  out.matrices[name] = std::move(m);
+}
+
+}  // namespace
+
 void record_run(const dpd::RunResult& r, CellResult& out) {
   if (!r.ok()) {
     out.status = "unstable";
@@ -110,9 +125,13 @@ void record_run(const dpd::RunResult& r, CellResult& out) {
   if (!r.ok()) return;
   sc["temperature_mean"] = r.temperature.mean;
   sc["temperature_std"] = r.temperature.std;
+  sc["temperature_std_sem"] = r.temperature.std_sem;
+  sc["temperature_std_sem_dof"] = r.temperature.std_sem_dof;
   sc["temperature_sem"] = r.temperature.sem;
+  sc["temperature_sem_dof"] = r.temperature.sem_dof;
   sc["pressure_mean"] = r.pressure.mean;
   sc["pressure_sem"] = r.pressure.sem;
+  sc["pressure_sem_dof"] = r.pressure.sem_dof;
   sc["pressure_conservative_mean"] = r.pressure_conservative.mean;
   sc["pressure_xx"] = r.pressure_diag[0].mean;
   sc["pressure_yy"] = r.pressure_diag[1].mean;
@@ -120,22 +139,28 @@ void record_run(const dpd::RunResult& r, CellResult& out) {
   if (!r.msd.msd.empty()) {
     sc["diffusion_coefficient"] = r.msd.diffusion;
     sc["diffusion_sem"] = r.msd.diffusion_sem;
+    sc["diffusion_sem_dof"] = r.msd.diffusion_sem_dof;
     out.series["msd/tau"] = r.msd.tau;
     out.series["msd/msd"] = r.msd.msd;
+    put_jackknife(r.msd.jackknife, "msd/jackknife", out);
   }
   const auto& v = r.velocity_pdf;
   if (!v.v.empty()) {
     sc["vpdf_error_mb"] = v.error_rate_kT_mean;
+    sc["vpdf_error_mb_sem"] = v.error_rate_kT_mean_sem;
+    sc["vpdf_error_mb_sem_dof"] = v.error_rate_kT_mean_sem_dof;
     sc["vpdf_error_mb_measured_T"] = v.error_rate_measured_mean;
     std::vector<double> pooled(v.v.size(), 0.0);
     for (std::size_t k = 0; k < pooled.size(); ++k) pooled[k] = (v.pdf[0][k] + v.pdf[1][k] + v.pdf[2][k]) / 3.0;
     out.series["vpdf/v"] = v.v;
     out.series["vpdf/p"] = pooled;
     out.series["vpdf/mb"] = v.mb_kT;
+    put_jackknife(v.jackknife, "vpdf/jackknife", out);
   }
   if (!r.rdf.g.empty()) {
     out.series["rdf/r"] = r.rdf.r;
     out.series["rdf/g"] = r.rdf.g;
+    put_jackknife(r.rdf.jackknife, "rdf/jackknife", out);
   }
 }
 

@@ -21,8 +21,10 @@ const char* stream_name(int words_per_pair, int k) {
 
 void record_fraction(const std::string& base, const std::vector<stats::Verdict>& verdicts, double alpha,
                      CellResult& out) {
+  // The interval at the level the report judges with: 1 − α.
   stats::PassFractionOptions o;
   o.alpha = alpha;
+  o.confidence = 1.0 - alpha;
   const stats::PassFraction f = stats::pass_fraction(std::span<const stats::Verdict>(verdicts), o);
   out.scalars[base + ".trials"] = double(f.trials);
   out.scalars[base + ".passed"] = double(f.passed);

@@ -91,7 +91,8 @@ std::string report_header(const StudyConfig& config, const Analysis& a, const st
        << ", γ = " << s.gamma << ", k_BT = " << s.kT << ", λ = " << s.lambda << ", " << s.steps << " steps ("
        << s.equilibrate << " discarded), pairs: " << s.pairs << "\n";
   md << "- replicas per variant: " << config.replicas << "; reference: " << config.reference << "; α = " << a.alpha
-     << "\n- config hash `" << config.hash << "` (the config is stored in study.h5 and study.toml); generated "
+     << "\n- " << a.error_control_sentence() << "\n- config hash `" << config.hash
+     << "` (the config is stored in study.h5 and study.toml); generated "
      << when << "\n\n";
   return md.str();
 }
@@ -135,26 +136,19 @@ std::string correlation_markdown(const Analysis& a) {
   o << "| generator | distribution | ζ(i,j,t) vs ζ(i,j+1,t): r (p) | ζ(i,j,t) vs ζ(i,j,t+1): r (p) |\n|---|---|---|---|\n";
   bool any = false;
   for (const auto& v : a.variants) {
-    std::vector<double> rp, pp, rt, pt;
-    for (const auto* c : v.cells) {
-      if (c->has("corr.pair.r")) rp.push_back(c->scalar("corr.pair.r", NAN)), pp.push_back(c->scalar("corr.pair.p", NAN));
-      if (c->has("corr.time.r")) rt.push_back(c->scalar("corr.time.r", NAN)), pt.push_back(c->scalar("corr.time.p", NAN));
-    }
-    if (rp.empty() && rt.empty()) continue;
+    if (v.correlations.empty()) continue;
     any = true;
-    const auto cell = [&](const std::vector<double>& r, const std::vector<double>& p) {
-      if (r.empty()) return std::string("–");
-      // Largest |r| and smallest p over the replicas: the case that would worry a user.
-      double worst_r = 0, min_p = 1;
-      for (double x : r) worst_r = std::abs(x) > std::abs(worst_r) ? x : worst_r;
-      for (double x : p) min_p = std::min(min_p, x);
-      char buf[80];
-      std::snprintf(buf, sizeof buf, "%s%+.4f (%.2g)%s", min_p < a.alpha / double(p.size()) ? "**" : "", worst_r, min_p,
-                    min_p < a.alpha / double(p.size()) ? "**" : "");
-      return std::string(buf);
+    const auto cell = [&](const std::string& what) {
+      for (const auto& c : v.correlations)
+        if (c.what == what && c.available) {
+          const std::string b = c.decision.differs ? "**" : "";
+          return b + detail::fmt("%+.4f", c.worst_r) + b + " (" +
+                 (c.decision.tested() ? detail::fmt("%.2g", c.decision.p_adjusted) : std::string("–")) + ")";
+        }
+      return std::string("–");
     };
     o << "| " << v.key.label() << (v.key.reference ? "" : " " + v.key.seeding) << " | " << v.key.distribution << " | "
-      << cell(rp, pp) << " | " << cell(rt, pt) << " |\n";
+      << cell("pair") << " | " << cell("time") << " |\n";
   }
   return any ? o.str() : "(no correlation taps stored)\n";
 }
@@ -189,12 +183,13 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
 
   md << "## Verdicts\n\n"
      << "Each variant (generator × rounds × distribution × seeding) is compared with MT19937 run with identical "
-        "settings and the same initial states. *Indistinguishable* means no observable and no pass fraction "
-        "differs at α = "
+        "settings and the same initial states. *Indistinguishable* means that no test of the variant (observables, "
+        "pass fractions, ζ correlations) differs at α = "
      << a.alpha
-     << " after a Bonferroni correction over everything compared; it is a statement about this sample size, not "
-        "a proof of equality. *Worst error / noise floor* is the largest ratio of an observable's error rate to "
-        "the MT-vs-MT noise floor (≈1 is noise; ≥3 would be visible).\n\n"
+     << " under the error control stated above; it is a statement about this sample size, not a proof of "
+        "equality. *Smallest corrected p* is the smallest of the variant's P-values after that correction: the "
+        "verdict says *differs* exactly when it is below α. Every bold mark and chart below reads the same "
+        "corrected decisions; a variant whose MT19937 replicas are missing or unreadable gets no verdict.\n\n"
      << summary_markdown(a) << "\n";
   for (const auto& d : dists)
     if (have("speed_vs_accuracy_" + d)) md << chart("speed_vs_accuracy_" + d, "speed against accuracy, " + d);
@@ -203,19 +198,27 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
      << "χ²: one test per tapped production step on all the step's numbers (Sturges bins), α = " << a.alpha
      << ". Lag-1 t: one test per tapped pair on the numbers it receives over all production steps. Output words "
         "are judged apart (a, b for two-word generators such as 64TEA). Fractions are pooled over replicas with "
-        "99 % Clopper–Pearson intervals; **bold** = inconsistent with 1 − α (exact binomial test, p < 0.01).\n\n";
+        "central Clopper–Pearson intervals at 1 − α; **bold** = inconsistent with 1 − α: the central exact "
+        "binomial test (p = 2·min(P[X ≤ k], P[X ≥ k]), the test that agrees with that interval), after the "
+        "error control.\n\n";
   for (const auto& d : dists) {
     md << "### " << d << "\n\n" << pass_table_markdown(a, d) << "\n";
     if (have("pass_vs_rounds_" + d)) md << chart("pass_vs_rounds_" + d, "pass fraction vs rounds, " + d);
   }
 
   md << "## Physical observables against MT\n\n"
-     << "Each cell: error rate (noise floor). Scalars (T, its fluctuation, P, D, the velocity PDF's error against "
-        "Maxwell–Boltzmann): |mean − mean_MT| / |mean_MT| over replicas; noise floor = 1σ of that difference "
-        "expected from the MT replicas' spread or, if larger, from the runs' own block standard errors (4 replicas "
-        "estimate a spread poorly); P-value from Welch's t-test. Curves (velocity PDF, g(r)): mean "
-        "relative deviation of each replica from the other MT replicas' mean, against the same quantity for MT "
-        "replicas themselves (the noise floor); one-sided Welch test. **Bold** = differs at α.\n\n";
+     << "Each cell: error rate (1σ) and the corrected P-value. Scalars (T, its fluctuation, P, D, the velocity "
+        "PDF's error against Maxwell–Boltzmann): error rate = |mean − mean_MT| / |mean_MT| over replicas "
+        "(|mean − mean_MT| for the velocity PDF's error, itself a rate); a two-sample t-test whose variance pools "
+        "both groups' replica spreads with every run's own standard error, each weighted by its degrees of "
+        "freedom (means: from the integrated autocorrelation time; T's fluctuation, D and the velocity PDF's "
+        "error: jackknife over 20 blocks of steps or beads), so that the test does not rest on the 2(n − 1) of "
+        "the replicas alone; 1σ = the "
+        "standard error of that difference on the same scale. Curves (velocity PDF, g(r), MSD): error rate = "
+        "mean relative deviation of the variant's mean curve from MT's; the L² F test of the replicas' curves "
+        "(the squared difference of the mean curves summed over the bins, weighted by counting noise for the "
+        "histograms and relatively for the MSD, calibrated by the effective number of independent bins). "
+        "**Bold** = differs after the error control.\n\n";
   for (const auto& d : dists) {
     md << "### " << d << "\n\n" << observables_markdown(a, d) << "\n";
     for (const auto& [n, alt] : {std::pair{"temperature_vs_rounds_", "temperature vs rounds"},
@@ -226,8 +229,9 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
 
   md << "## Correlations of ζ across neighbouring pairs and consecutive steps\n\n"
      << "A weak hash fed neighbouring inputs can pass χ² with correlated outputs. Pooled Pearson r of ζ between "
-        "the tapped couples of neighbouring pair ids and between consecutive steps of one pair; worst replica "
-        "shown; **bold** = significant after Bonferroni over replicas.\n\n"
+        "the tapped couples of neighbouring pair ids and between consecutive steps of one pair, the largest |r| "
+        "over the replicas shown; the replicas' tests combined (Stouffer) into one corrected P-value in "
+        "parentheses; **bold** = differs after the error control.\n\n"
      << correlation_markdown(a) << "\n";
 
   md << "## NIST SP 800-22\n\n";

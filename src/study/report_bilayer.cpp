@@ -1,5 +1,5 @@
 // report.md for the membrane scene: the bilayer's observables per generator with CIs, their paired differences
-// from MT19937 beside the MT-vs-MT noise floor, and the profile and CI charts.
+// from MT19937 with their tests, and the profile and CI charts.
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -64,17 +64,17 @@ std::string bilayer_table_csv(const Analysis& a) {
 
 std::string bilayer_differences_markdown(const Analysis& a, const std::string& distribution) {
   std::ostringstream o;
-  o << "| generator | observable | value | MT | difference [95 % CI] | paired-t p | noise floor (1σ) | |Δ| / floor |\n"
+  o << "| generator | observable | value | MT | difference [95 % CI] | 1σ | paired-t p | corrected p |\n"
        "|---|---|---|---|---|---|---|---|\n";
   std::ostringstream curves;
-  curves << "| generator | profile | mean relative deviation from MT | MT vs MT (noise floor) | p (one-sided) |\n"
-            "|---|---|---|---|---|\n";
+  curves << "| generator | profile | mean relative deviation from MT | F (d) | p | corrected p |\n"
+            "|---|---|---|---|---|---|\n";
   bool any_curve = false;
   for (const auto& v : a.variants) {
     if (v.key.reference || v.key.distribution != distribution) continue;
     for (const auto& c : v.observables) {
-      const bool differs = std::isfinite(c.p_value) && c.p_value < a.alpha;
-      const std::string b = differs ? "**" : "";
+      const std::string b = c.decision.differs ? "**" : "";
+      const std::string corrected = c.decision.tested() ? fmt("%.2g", c.decision.p_adjusted) : "–";
       if (!c.available) {
         o << "| " << row_label(v) << " | " << label_of(c.observable) << " | – | – | – | – | – | " << c.note << " |\n";
         continue;
@@ -82,13 +82,13 @@ std::string bilayer_differences_markdown(const Analysis& a, const std::string& d
       if (!c.paired) {
         any_curve = true;
         curves << "| " << row_label(v) << " | " << label_of(c.observable) << " | " << b << fmt("%.2e", c.error_rate)
-               << b << " | " << fmt("%.2e", c.noise_floor) << " | " << fmt("%.2g", c.p_value) << " |\n";
+               << b << " | " << fmt("%.2f", c.statistic) << " (" << fmt("%.1f", c.dof) << ") | "
+               << fmt("%.2g", c.decision.p) << " | " << corrected << " |\n";
         continue;
       }
       o << "| " << row_label(v) << " | " << label_of(c.observable) << " | " << fmt("%.4f", c.value) << " | "
         << fmt("%.4f", c.ref) << " | " << b << fmt("%+.4f", c.diff) << b << " [± " << fmt("%.4f", c.diff_ci) << "] | "
-        << fmt("%.2g", c.p_value) << " | " << fmt("%.4f", c.noise_floor) << " | "
-        << fmt("%.2f", c.noise_floor > 0 ? c.error_rate / c.noise_floor : NAN) << " |\n";
+        << fmt("%.4f", c.sigma) << " | " << fmt("%.2g", c.decision.p) << " | " << corrected << " |\n";
     }
   }
   if (any_curve) o << '\n' << curves.str();
@@ -98,16 +98,16 @@ std::string bilayer_differences_markdown(const Analysis& a, const std::string& d
 std::string bilayer_differences_csv(const Analysis& a) {
   std::ostringstream o;
   o << "generator,rounds,distribution,seeding,dt,observable,replicas,value,value_sd,reference_replicas,reference,"
-       "reference_sd,pairs,difference,difference_ci95,p_value,test,noise_floor\n";
+       "reference_sd,pairs,difference,difference_ci95,sigma,test,statistic,dof,p_value,p_adjusted,differs\n";
   for (const auto& v : a.variants)
     for (const auto& c : v.observables)
       o << v.key.generator << ',' << v.key.rounds << ',' << v.key.distribution << ',' << v.key.seeding << ','
         << detail::num(v.key.dt) << ',' << c.observable << ',' << c.n << ',' << detail::num(c.value) << ','
         << detail::num(c.value_sd) << ',' << c.n_ref << ',' << detail::num(c.ref) << ',' << detail::num(c.ref_sd)
         << ',' << c.n_pairs << ',' << detail::num(c.paired ? c.diff : c.error_rate) << ','
-        << detail::num(c.diff_ci) << ',' << detail::num(c.p_value) << ','
-        << (c.paired ? "paired t" : "one-sided Welch on relative deviations") << ',' << detail::num(c.noise_floor)
-        << '\n';
+        << detail::num(c.diff_ci) << ',' << detail::num(c.sigma) << ',' << c.test << ','
+        << detail::num(c.statistic) << ',' << detail::num(c.dof) << ',' << detail::num(c.decision.p) << ','
+        << detail::num(c.decision.p_adjusted) << ',' << int(c.decision.differs) << '\n';
   return o.str();
 }
 
@@ -132,9 +132,9 @@ fs::path write_bilayer_report(const StudyConfig& config, const std::vector<CellR
      << "Each generator is compared with MT19937 run with identical settings from the same initial states (one per "
         "replica). *Indistinguishable* means no observable differs at α = "
      << a.alpha
-     << " after a Bonferroni correction over everything compared (paired t-tests across replicas for the scalars, "
-        "one-sided Welch tests for the density profiles); it is a statement about this sample size. *Worst error / "
-        "noise floor*: the largest |difference| / MT-vs-MT noise floor (≈1 is noise). Bilayer cells tap no raw "
+     << " under the error control stated above (paired t-tests across replicas for the scalars, L² F tests for "
+        "the density profiles); it is a statement about this sample size. *Smallest corrected p*: the smallest "
+        "P-value after that correction, below α exactly when the verdict says *differs*. Bilayer cells tap no raw "
         "numbers: the generators' χ², lag-1 t and NIST results are the water study's.\n\n"
      << summary_markdown(a) << "\n";
 
@@ -153,11 +153,11 @@ fs::path write_bilayer_report(const StudyConfig& config, const std::vector<CellR
 
   md << "## Differences from MT19937\n\n"
      << "difference = mean over replicas of (generator − MT) on the same initial state, with its 95 % CI and the "
-        "paired t-test; noise floor = 1σ of a difference of means expected from the MT replicas' spread or, if larger, "
-        "the runs' own block standard errors (as in the water study). **Bold** = differs at α = "
-     << a.alpha << " before the Bonferroni correction. Density profiles: mean relative deviation of each replica's "
-        "profile from the other MT replicas' mean, over bins above a tenth of the MT peak, against the same for MT's "
-        "own replicas.\n\n";
+        "paired t-test, whose variance pools the differences' spread with the runs' own block standard errors "
+        "(as in the water study); 1σ = the standard error of the difference. **Bold** = differs at α = "
+     << a.alpha << " after the error control. Density profiles: mean relative deviation of the generator's mean "
+        "profile from MT's over bins above a tenth of the peak, and the L² F test of the replicas' profiles with "
+        "its effective number of independent bins d.\n\n";
   for (const auto& d : dists) md << "### " << d << "\n\n" << bilayer_differences_markdown(a, d) << "\n";
 
   md << "## Density profiles\n\n";
@@ -185,8 +185,8 @@ fs::path write_bilayer_report(const StudyConfig& config, const std::vector<CellR
 
   md << detail::broken_cells_markdown(cells);
   md << "\n## Files\n\n"
-     << "`summary.csv`, `bilayer_table.csv` (means and CIs), `bilayer_differences.csv` (differences, tests, noise "
-        "floors), `cells.csv` (every scalar of every cell); charts in `charts/` (SVG, PNG and the gnuplot script of "
+     << "`summary.csv`, `bilayer_table.csv` (means and CIs), `bilayer_differences.csv` (differences and their tests), "
+        "`cells.csv` (every scalar of every cell); charts in `charts/` (SVG, PNG and the gnuplot script of "
         "each); all data in `../study.h5` (each cell's profile/z, profile/head, profile/tail, profile/water).\n";
   detail::write_text(dir / "report.md", md.str());
   return dir / "report.md";

@@ -11,6 +11,7 @@
 #include "dpdrng/common/output.hpp"
 #include "dpdrng/study/report.hpp"
 #include "report_chart.hpp"
+#include "report_common.hpp"
 
 namespace dpdrng::study {
 namespace fs = std::filesystem;
@@ -185,9 +186,13 @@ std::vector<std::string> write_charts(const Analysis& a, const std::vector<CellR
                "fraction of tests passed", true, false, "", {}, false};
     Chart temp{"temperature_vs_rounds_" + dist, "Mean temperature ± replica s.d. (" + dist + ")", "rounds",
                "k_BT (kinetic)", true, false, "", {}, false};
-    Chart speed{"speed_vs_accuracy_" + dist, "Speed against accuracy (" + dist + ")",
-                "ms per DPD step (cost)", "worst observable error / MT-vs-MT noise floor", false, false,
-                "set offsets graph 0.05, graph 0.15, graph 0.1, graph 0.1\n", {}, false};
+    // The verdict's own evidence: −log₁₀ of the smallest corrected P-value, so that a point lies above the α
+    // line exactly when its verdict says "differs". Log axis: P-values above 0.98 sit on the floor at 0.01,
+    // those below 1e-300 (or 0) at 300.
+    Chart speed{"speed_vs_accuracy_" + dist, "Speed against evidence of a difference from MT (" + dist + ")",
+                "ms per DPD step (cost)", "-log10(smallest corrected p) (log scale, clipped to [0.01, 300])",
+                false, true,
+                "set offsets graph 0.05, graph 0.15, graph 0.1, graph 0.1\nset yrange [0.01:*]\n", {}, false};
     if (ref) {
       cost.extra += hline(ref->ns_per_number, ref->key.label(), "black");
       step.extra += hline(ref->step_ms, ref->key.label(), "black");
@@ -210,8 +215,7 @@ std::vector<std::string> write_charts(const Analysis& a, const std::vector<CellR
     }
     pass.extra += hline(1 - a.alpha, "1 − α", "gray30") + "set yrange [*:1.005]\n";
     temp.auto_logy = true;
-    speed.auto_logy = true;
-    speed.extra += hline(1.0, "noise floor (1σ)", "gray30") + hline(3.0, "3σ", "red", 0.9);
+    speed.extra += hline(-std::log10(a.alpha), "α (" + detail::num(a.alpha) + ")", "red", 0.9);
     Line ok{"indistinguishable from MT", "using 1:2:3 with labels point pt 7 ps 1.2 lc rgb 'dark-green' offset 0.8,0.6 left",
             {}, {}};
     Line bad{"differs from MT", "using 1:2:3 with labels point pt 5 ps 1.2 lc rgb 'red' offset 0.8,0.6 left", {}, {}};
@@ -243,9 +247,9 @@ std::vector<std::string> write_charts(const Analysis& a, const std::vector<CellR
           l.style = "using 1:2:3:4 with yerrorlines lw 2 pt 7";
           l.rows.push_back({r, p.fraction, p.ci_low, p.ci_high});
         }
-        if (std::isfinite(v->step_ms) && std::isfinite(v->worst_error_over_floor)) {
+        if (std::isfinite(v->step_ms) && std::isfinite(v->min_p)) {
           Line& target = v->min_p < a.alpha ? bad : ok;
-          target.rows.push_back({v->step_ms, v->worst_error_over_floor});
+          target.rows.push_back({v->step_ms, std::max(0.01, -std::log10(std::max(v->min_p, 1e-300)))});
           target.labels.push_back(v->key.label());
         }
       }

@@ -14,13 +14,15 @@ using detail::num;
 
 std::string pass_cell(const PassSummary& p) {
   if (!p.available || p.trials == 0) return "–";
+  const std::string b = p.decision.differs ? "**" : "";
   char buf[96];
-  std::snprintf(buf, sizeof buf, "%s%.3f [%.3f, %.3f] (%zu)", p.binomial_p < 0.01 ? "**" : "", p.fraction, p.ci_low,
-                p.ci_high, p.trials);
+  std::snprintf(buf, sizeof buf, "%.3f [%.3f, %.3f] (%zu)", p.fraction, p.ci_low, p.ci_high, p.trials);
   std::string s = buf;
-  if (p.binomial_p < 0.01) s.insert(s.find(' '), "**");
-  return s;
+  return b + s.substr(0, s.find(' ')) + b + s.substr(s.find(' '));
 }
+
+// "p = 3.1e-05" for a decided test, "–" for one that could not be made.
+std::string adjusted(const Decision& d) { return d.tested() ? fmt("%.2g", d.p_adjusted) : "–"; }
 
 const PassSummary* find_pass(const VariantReport& v, const std::string& test, const std::string& stream) {
   for (const auto& p : v.passes)
@@ -54,7 +56,7 @@ const char* kObservableNames[][2] = {
     {"temperature_mean", "T"},        {"temperature_std", "T fluctuation"},
     {"pressure_mean", "P"},           {"diffusion_coefficient", "D"},
     {"vpdf_error_mb", "v-PDF vs MB"}, {"vpdf_vs_mt", "v-PDF vs MT"},
-    {"rdf_vs_mt", "g(r) vs MT"},
+    {"rdf_vs_mt", "g(r) vs MT"},      {"msd_vs_mt", "MSD vs MT"},
 };
 std::string pretty(const std::string& o) {
   for (const auto& n : kObservableNames)
@@ -66,8 +68,9 @@ std::string pretty(const std::string& o) {
 
 std::string pass_table_markdown(const Analysis& a, const std::string& distribution) {
   std::ostringstream o;
-  o << "| generator | output | χ² pass fraction [99 % CI] (steps) | lag-1 t pass fraction [99 % CI] (pairs) |\n"
-    << "|---|---|---|---|\n";
+  const std::string ci = fmt("%g", 100 * (1 - a.alpha)) + " % CI";
+  o << "| generator | output | χ² pass fraction [" << ci << "] (steps) | lag-1 t pass fraction [" << ci
+    << "] (pairs) |\n|---|---|---|---|\n";
   for (const auto& v : a.variants) {
     if (v.key.distribution != distribution) continue;
     for (const auto& s : streams_of(v)) {
@@ -83,31 +86,35 @@ std::string pass_table_markdown(const Analysis& a, const std::string& distributi
 
 std::string pass_table_csv(const Analysis& a) {
   std::ostringstream o;
-  o << "generator,rounds,distribution,seeding,dt,output,test,trials,passed,fraction,ci_low,ci_high,binomial_p\n";
+  o << "generator,rounds,distribution,seeding,dt,output,test,trials,passed,fraction,ci_low,ci_high,binomial_p,"
+       "p_adjusted,differs\n";
   for (const auto& v : a.variants)
     for (const auto& p : v.passes)
       o << v.key.generator << ',' << v.key.rounds << ',' << v.key.distribution << ',' << v.key.seeding << ','
         << num(v.key.dt) << ',' << p.stream << ',' << p.test << ',' << p.trials << ',' << p.passed << ','
-        << num(p.fraction) << ',' << num(p.ci_low) << ',' << num(p.ci_high) << ',' << num(p.binomial_p) << '\n';
+        << num(p.fraction) << ',' << num(p.ci_low) << ',' << num(p.ci_high) << ',' << num(p.decision.p) << ','
+        << num(p.decision.p_adjusted) << ',' << int(p.decision.differs) << '\n';
   return o.str();
 }
 
 std::string observables_csv(const Analysis& a) {
   std::ostringstream o;
   o << "generator,rounds,distribution,seeding,dt,observable,replicas,value,value_sd,reference_replicas,reference,"
-       "reference_sd,error_rate,noise_floor,p_value,note\n";
+       "reference_sd,error_rate,sigma,test,statistic,dof,dof2,p_value,p_adjusted,differs,note\n";
   for (const auto& v : a.variants)
     for (const auto& c : v.observables)
       o << v.key.generator << ',' << v.key.rounds << ',' << v.key.distribution << ',' << v.key.seeding << ','
         << num(v.key.dt) << ',' << c.observable << ',' << c.n << ',' << num(c.value) << ',' << num(c.value_sd) << ','
-        << c.n_ref << ',' << num(c.ref) << ',' << num(c.ref_sd) << ',' << num(c.error_rate) << ','
-        << num(c.noise_floor) << ',' << num(c.p_value) << ',' << csv_quote(c.note) << '\n';
+        << c.n_ref << ',' << num(c.ref) << ',' << num(c.ref_sd) << ',' << num(c.error_rate) << ',' << num(c.sigma)
+        << ',' << c.test << ',' << num(c.statistic) << ',' << num(c.dof) << ',' << num(c.dof2) << ','
+        << num(c.decision.p) << ',' << num(c.decision.p_adjusted) << ',' << int(c.decision.differs) << ','
+        << csv_quote(c.note) << '\n';
   return o.str();
 }
 
 std::string observables_markdown(const Analysis& a, const std::string& distribution) {
   std::ostringstream o;
-  // One column per observable: "error rate (noise floor)", bold where the P-value says it differs.
+  // One column per observable: "error rate (1σ) p", bold where the error control says it differs.
   std::vector<std::string> names;
   for (const auto& v : a.variants)
     for (const auto& c : v.observables)
@@ -129,9 +136,10 @@ std::string observables_markdown(const Analysis& a, const std::string& distribut
         o << " – |";
         continue;
       }
-      const bool differs = std::isfinite(c->p_value) && c->p_value < a.alpha;
-      o << ' ' << (differs ? "**" : "") << fmt("%.2e", c->error_rate) << (differs ? "**" : "") << " ("
-        << fmt("%.1e", c->noise_floor) << ") |";
+      const std::string b = c->decision.differs ? "**" : "";
+      o << ' ' << b << fmt("%.2e", c->error_rate) << b;
+      if (std::isfinite(c->sigma)) o << " (" << fmt("%.1e", c->sigma) << ")";
+      o << " p " << adjusted(c->decision) << " |";
     }
     o << '\n';
   }
@@ -140,12 +148,12 @@ std::string observables_markdown(const Analysis& a, const std::string& distribut
 
 std::string summary_markdown(const Analysis& a) {
   std::ostringstream o;
-  o << "| generator | distribution | seeding | replicas | verdict | worst error / noise floor | NIST columns failed | "
+  o << "| generator | distribution | seeding | replicas | verdict | smallest corrected p | NIST columns failed | "
        "ns per number | step (ms) | RNG share |\n|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& v : a.variants) {
     o << "| " << v.key.label() << " | " << v.key.distribution << " | " << (v.key.reference ? "stream" : v.key.seeding)
       << " | " << v.cells.size() << (v.broken.empty() ? std::string() : fmt("+%.0f broken", double(v.broken.size())))
-      << " | " << v.verdict << " | " << fmt("%.2f", v.worst_error_over_floor) << " | "
+      << " | " << v.verdict << " | " << fmt("%.2g", v.min_p) << " | "
       << (std::isfinite(v.nist_failed) ? fmt("%.0f", v.nist_failed) + " / " + fmt("%.0f", v.nist_columns) : "–")
       << " | " << fmt("%.2f", v.ns_per_number) << " | " << fmt("%.3f", v.step_ms) << " | "
       << fmt("%.0f %%", 100 * v.rng_share) << " |\n";
@@ -155,13 +163,13 @@ std::string summary_markdown(const Analysis& a) {
 
 std::string summary_csv(const Analysis& a) {
   std::ostringstream o;
-  o << "generator,rounds,distribution,seeding,dt,replicas,broken,verdict,min_p,min_p_what,worst_error_over_floor,"
+  o << "generator,rounds,distribution,seeding,dt,replicas,broken,verdict,min_p_adjusted,min_p_what,"
        "nist_failed_columns,nist_columns,ns_per_number,step_ms,rng_share\n";
   for (const auto& v : a.variants)
     o << v.key.generator << ',' << v.key.rounds << ',' << v.key.distribution << ','
       << (v.key.reference ? "stream" : v.key.seeding) << ',' << num(v.key.dt) << ',' << v.cells.size() << ','
       << v.broken.size() << ',' << csv_quote(v.verdict) << ',' << num(v.min_p) << ',' << csv_quote(v.min_p_what)
-      << ',' << num(v.worst_error_over_floor) << ',' << num(v.nist_failed) << ',' << num(v.nist_columns) << ','
+      << ',' << num(v.nist_failed) << ',' << num(v.nist_columns) << ','
       << num(v.ns_per_number) << ',' << num(v.step_ms) << ','
       << num(v.rng_share) << '\n';
   return o.str();

@@ -116,15 +116,17 @@ TEST(CliSimulate, TinyWaterRunGivesTheIssuesJson) {
       "momentum_drift_per_bead", "momentum_final", "msd_fit", "pairs", "particles", "pressure",
       "pressure_conservative", "pressure_conservative_diag", "pressure_conservative_mean",
       "pressure_conservative_sem", "pressure_diag", "pressure_mean", "pressure_sem", "seeding", "status",
-      "steps_done", "temperature", "temperature_mean", "temperature_sem", "temperature_std", "timings",
-      "velocity_pdf_error_rate", "velocity_pdf_error_rate_measured_T", "velocity_pdf_error_rate_xyz"};
+      "steps_done", "temperature", "temperature_mean", "temperature_sem", "temperature_std", "temperature_std_sem",
+      "timings", "velocity_pdf_error_rate", "velocity_pdf_error_rate_measured_T", "velocity_pdf_error_rate_sem",
+      "velocity_pdf_error_rate_xyz"};
   EXPECT_EQ(keys(j), want);
   const std::set<std::string> timings = {
       "force_s", "list_builds", "ns_per_number", "ns_per_zeta", "particle_steps_per_s", "per_step_s",
       "production_particle_steps_per_s", "production_s", "random_numbers", "rng_share_estimate", "threads",
       "total_s", "zetas"};
   EXPECT_EQ(keys(j.at("timings")), timings);
-  EXPECT_EQ(keys(j.at("temperature")), (std::set<std::string>{"mean", "std", "sem", "n"}));
+  EXPECT_EQ(keys(j.at("temperature")),
+            (std::set<std::string>{"mean", "std", "sem", "sem_dof", "std_sem", "std_sem_dof", "n"}));
 }
 
 TEST(CliSimulate, TinyBilayerRunGivesItsJsonAlikeFromEitherCommand) {

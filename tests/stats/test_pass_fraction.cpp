@@ -1,4 +1,4 @@
-// Pass fractions: Clopper–Pearson intervals and the exact binomial test against R's binom.test, chunking.
+// Pass fractions: counting verdicts, their interval and test (binomial.hpp, tested in test_binomial.cpp), chunking.
 #include <gtest/gtest.h>
 #include <gsl/gsl_errno.h>
 
@@ -29,49 +29,6 @@ std::vector<double> unit_stream(int rounds, std::uint64_t start, std::size_t n) 
   return u;
 }
 }  // namespace
-
-// The example of R's ?binom.test (Conover 1971, p. 97f.): binom.test(c(682, 243), p = 3/4) prints
-// p-value = 0.3825 and the 95 percent confidence interval 0.7076683 0.7654066.
-TEST(PassFraction, MatchesRsBinomTestExample) {
-  EXPECT_NEAR(binomial_test_p(682, 925, 0.75), 0.3825, 5e-5);
-  const auto [lo, hi] = clopper_pearson(682, 925, 0.95);
-  EXPECT_NEAR(lo, 0.7076683, 1e-7);
-  EXPECT_NEAR(hi, 0.7654066, 1e-7);
-}
-
-// All n pass: the interval's lower end has the closed form ((1 − c)/2)^(1/n), the upper end is 1; none pass:
-// the mirror image. (Clopper & Pearson 1934, the boundary cases of their construction.)
-TEST(PassFraction, ClopperPearsonBoundaryCases) {
-  auto [lo, hi] = clopper_pearson(100, 100, 0.95);
-  EXPECT_NEAR(lo, std::pow(0.025, 0.01), 1e-12);
-  EXPECT_EQ(hi, 1.0);
-  std::tie(lo, hi) = clopper_pearson(0, 100, 0.95);
-  EXPECT_EQ(lo, 0.0);
-  EXPECT_NEAR(hi, 1.0 - std::pow(0.025, 0.01), 1e-12);
-  std::tie(lo, hi) = clopper_pearson(0, 0, 0.95);
-  EXPECT_EQ(lo, 0.0);
-  EXPECT_EQ(hi, 1.0);
-}
-
-// Large counts, where GSL's beta inverse is most stressed: the interval must still bracket the estimate and
-// its ends must hit the tail probabilities of the definition.
-TEST(PassFraction, ClopperPearsonLargeCountsSatisfyTheDefinition) {
-  const std::size_t n = 1000000, x = 990123;
-  const auto [lo, hi] = clopper_pearson(x, n, 0.99);
-  EXPECT_LT(lo, 0.990123);
-  EXPECT_GT(hi, 0.990123);
-  EXPECT_NEAR(hi - lo, 2 * 2.5758 * std::sqrt(0.990123 * 0.009877 / n), 2e-5);  // normal approximation
-}
-
-// 100 of 100 pass at α = 0.01: P(100) = 0.99^100 = 0.3660; every outcome but 99 (P = 0.99^99 = 0.3697) is no
-// more likely, so R's two-sided p is 1 − 0.99^99 (hand computation of binom.test's definition).
-TEST(PassFraction, BinomialTestByHand) {
-  EXPECT_NEAR(binomial_test_p(100, 100, 0.99), 1.0 - std::pow(0.99, 99), 1e-12);
-  EXPECT_NEAR(binomial_test_p(5, 10, 0.5), 1.0, 0.0);
-  // 10 of 10 at p = 0.5: only 0 and 10 are as unlikely: 2 / 1024.
-  EXPECT_NEAR(binomial_test_p(10, 10, 0.5), 2.0 / 1024.0, 1e-15);
-  EXPECT_NEAR(binomial_test_p(0, 10, 0.5), 2.0 / 1024.0, 1e-15);
-}
 
 TEST(PassFraction, VerdictsAndNotApplicableCounting) {
   std::vector<Verdict> v(1000, Verdict::pass);
@@ -125,4 +82,17 @@ TEST(PassFraction, GoodAndWeakGeneratorsOverManyChunks) {
   const PassFraction w = pass_fraction(verdicts_of(weak_results));
   EXPECT_LT(w.fraction, 0.5);
   EXPECT_EQ(w.verdict, Verdict::fail);
+}
+
+// The verdict is the interval's: 154 of 160 at α = 0.01 lies inside the 99 % interval [0.905, 0.998] of a
+// good generator's 0.99, so it passes (the R-style test once called it a failure at p = 0.0057).
+TEST(PassFraction, VerdictAgreesWithItsInterval) {
+  const PassFraction pf = pass_fraction(154, 160, {.alpha = 0.01, .confidence = 0.99});
+  EXPECT_LE(pf.ci_low, 0.99);
+  EXPECT_GE(pf.ci_high, 0.99);
+  EXPECT_GT(pf.binomial_p, 0.01);
+  EXPECT_EQ(pf.verdict, Verdict::pass);
+  const PassFraction low = pass_fraction(152, 160, {.alpha = 0.01, .confidence = 0.99});
+  EXPECT_LT(low.ci_high, 0.99);
+  EXPECT_EQ(low.verdict, Verdict::fail);
 }

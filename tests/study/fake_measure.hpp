@@ -50,18 +50,22 @@ struct FakeMeasure {
     r.scalars["cost.ns_per_number"] = c.reference ? 3.0 : 0.5 * c.rounds;
     r.scalars["cost.step_seconds"] = 1e-4 * (1 + 0.1 * c.rounds);
     r.scalars["cost.rng_share"] = 0.1;
-    std::vector<double> v, p, g, rr;
+    std::vector<double> v, p, g, rr, tau, msd;
     for (int k = 0; k < 40; ++k) {
       const double x = -4 + 0.2 * k;
       v.push_back(x);
       p.push_back(std::exp(-x * x / 2) / std::sqrt(2 * M_PI) * (1 + 0.01 * noise(s, 100 + k)));
       rr.push_back(0.05 * (k + 1));
       g.push_back(1 + 0.3 * std::sin(rr.back() * 3) * (1 + 0.01 * noise(s, 200 + k)));
+      tau.push_back(0.4 * k);
+      msd.push_back(6 * 0.28 * tau.back() * (1 + 0.02 * noise(s, 300 + k)));
     }
     r.series["vpdf/v"] = v;
     r.series["vpdf/p"] = p;
     r.series["rdf/r"] = rr;
     r.series["rdf/g"] = g;
+    r.series["msd/tau"] = tau;
+    r.series["msd/msd"] = msd;
     const char* streams[] = {"a", "b"};
     const int n = c.generator == "tea64" ? 2 : 1;
     for (int k = 0; k < n; ++k) {

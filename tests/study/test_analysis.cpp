@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "dpdrng/stats/multiple.hpp"
 #include "dpdrng/study/analysis.hpp"
 #include "dpdrng/study/report.hpp"
 #include "fake_measure.hpp"
@@ -28,15 +29,33 @@ const VariantReport& find(const Analysis& a, const std::string& gen, int rounds)
   throw std::runtime_error("no variant " + gen);
 }
 
-}  // namespace
-
-TEST(StudyAnalysis, WelchMatchesAHandComputation) {
-  // x = {1,2,3,4}, y = {2,4,6,8}: t = -1.7321, Welch dof = 4.4118, two-sided p = 0.1516 (R: t.test(x, y);
-  // the P-value also checked by integrating the t density numerically).
-  EXPECT_NEAR(welch_p({1, 2, 3, 4}, {2, 4, 6, 8}), 0.15158, 5e-5);
-  EXPECT_TRUE(std::isnan(welch_p({1}, {2, 3})));
-  EXPECT_DOUBLE_EQ(welch_p({1, 1}, {1, 1}), 1.0);
+const Comparison& comparison(const VariantReport& v, const std::string& name) {
+  for (const auto& o : v.observables)
+    if (o.observable == name) return o;
+  throw std::runtime_error("no comparison " + name);
 }
+
+// Every decided test of the analysis, in variant order.
+std::vector<const Decision*> decisions(const Analysis& a) {
+  std::vector<const Decision*> d;
+  for (const auto& v : a.variants) {
+    for (const auto& o : v.observables)
+      if (o.decision.tested()) d.push_back(&o.decision);
+    for (const auto& p : v.passes)
+      if (p.decision.tested()) d.push_back(&p.decision);
+    for (const auto& c : v.correlations)
+      if (c.decision.tested()) d.push_back(&c.decision);
+  }
+  return d;
+}
+
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + what.size())) ++n;
+  return n;
+}
+
+}  // namespace
 
 TEST(StudyAnalysis, CurveErrorSkipsBinsBelowTheThreshold) {
   EXPECT_NEAR(curve_error({1.1, 2.0, 50}, {1.0, 2.0, 0.01}, 0.5), 0.05, 1e-12);
@@ -51,38 +70,40 @@ TEST(StudyAnalysis, IdenticalGeneratorsAreIndistinguishable) {
   EXPECT_EQ(v.verdict, "indistinguishable from MT at this sample size");
   for (const auto& o : v.observables) {
     EXPECT_TRUE(o.available) << o.observable;
-    EXPECT_GT(o.noise_floor, 0) << o.observable;
+    EXPECT_TRUE(o.decision.tested()) << o.observable;
+    EXPECT_FALSE(o.decision.differs) << o.observable;
   }
 }
 
 TEST(StudyAnalysis, APlantedTemperatureShiftIsCalledADifference) {
   const StudyConfig cfg = parse_config(kConfig, "c.toml");
-  // 1 % against a replica spread of ~0.1 %: far beyond the noise floor.
+  // 1 % against a replica spread of ~0.1 %: far beyond the noise.
   const Analysis a = analyse(cfg, fake_cells(cfg, 0.0103));
   const auto& v = find(a, "tea32", 1);
   EXPECT_EQ(v.verdict.rfind("differs (p = ", 0), 0u) << v.verdict;
   EXPECT_EQ(v.min_p_what, "temperature_mean");
-  EXPECT_GT(v.worst_error_over_floor, 5);
+  const Comparison& t = comparison(v, "temperature_mean");
+  EXPECT_TRUE(t.decision.differs);
+  EXPECT_GT(t.error_rate / t.sigma, 5);
+  EXPECT_GE(t.decision.p_adjusted, t.decision.p);
   EXPECT_EQ(find(a, "tea32", 8).verdict, "indistinguishable from MT at this sample size");
 }
 
-// Four replicas can agree by chance far more closely than their runs' own errors allow; the floor then falls
-// back on those errors. Here MT's temperatures are identical (spread 0) and every run claims a block SEM of
-// 0.002: the floor must be 0.002·√(1/6 + 1/6) / 1.03, not 0 (which would make every ratio infinite).
-TEST(StudyAnalysis, NoiseFloorFallsBackOnTheRunsOwnErrors) {
+// Every run's own error joins the replicas' spreads, weighted by the degrees of freedom the cell stores. Here all
+// twelve runs report T = 1.03 exactly (no spread) with an error of 0.002 on 19 degrees of freedom: the pooled
+// variance is 12 · 19 · 0.002² / (10 + 12 · 19), and 1σ of the relative difference that sd · √(2/6) / 1.03.
+TEST(StudyAnalysis, RunErrorsArePooledWithTheReplicaSpreads) {
   const StudyConfig cfg = parse_config(kConfig, "c.toml");
   auto cells = fake_cells(cfg, 0.0);
   for (auto& c : cells) {
+    c.scalars["temperature_mean"] = 1.03;
     c.scalars["temperature_sem"] = 0.002;
-    if (c.cell.reference) c.scalars["temperature_mean"] = 1.03;
+    c.scalars["temperature_sem_dof"] = 19;
   }
-  const Analysis a = analyse(cfg, cells);
-  for (const auto& o : find(a, "tea32", 8).observables)
-    if (o.observable == "temperature_mean") {
-      EXPECT_NEAR(o.noise_floor, 0.002 * std::sqrt(2.0 / 6) / 1.03, 1e-12);
-      return;
-    }
-  ADD_FAILURE() << "no temperature comparison";
+  const Comparison& t = comparison(find(analyse(cfg, cells), "tea32", 8), "temperature_mean");
+  EXPECT_EQ(t.dof, 10.0 + 12 * 19);
+  EXPECT_NEAR(t.sigma, 0.002 * std::sqrt(12.0 * 19 / t.dof) * std::sqrt(2.0 / 6) / 1.03, 1e-15);
+  EXPECT_EQ(t.decision.p, 1.0);
 }
 
 TEST(StudyAnalysis, PassFractionsPoolReplicasAndKeepTea64OutputsApart) {
@@ -97,30 +118,30 @@ TEST(StudyAnalysis, PassFractionsPoolReplicasAndKeepTea64OutputsApart) {
       EXPECT_EQ(p.passed, 594u);
       EXPECT_LT(p.ci_low, 0.99);
       EXPECT_GT(p.ci_high, 0.99);
-      EXPECT_GT(p.binomial_p, 0.5);  // exactly the expected 1 % failing
+      EXPECT_GT(p.decision.p, 0.5);  // exactly the expected 1 % failing
     }
   }
   const std::string table = pass_table_markdown(a, "gauss");
   EXPECT_NE(table.find("| tea64(1) distance | a |"), std::string::npos) << table;
   EXPECT_NE(table.find("| tea64(1) distance | b |"), std::string::npos) << table;
+  EXPECT_NE(table.find("[99 % CI]"), std::string::npos) << table;
 }
 
-TEST(StudyAnalysis, ClopperPearsonIntervalIsFiniteWhereGslPinvIsNot) {
-  // 792 of 800 passed: the case where gsl_cdf_beta_Pinv returned NaN for the lower bound. The exact 99 %
-  // interval lies below the normal approximation's 0.981 and must still contain 0.99.
-  const StudyConfig cfg = parse_config(kConfig, "c.toml");
+// The pass fraction's interval and bold mark follow the config's α, not a fixed 1 %: 98 of 100 per replica is
+// consistent with 0.99 (p = 0.52 over 600) but not with 0.999 at α = 0.001.
+TEST(StudyAnalysis, PassFractionsUseTheConfigsAlpha) {
+  const StudyConfig cfg = parse_config(kConfig + "alpha = 0.001\n", "c.toml");
   auto cells = fake_cells(cfg, 0.0);
-  for (auto& c : cells) c.scalars["ttest.x.passed"] = c.cell.replica < 2 ? 396 : 0, c.scalars["ttest.x.trials"] =
-                                                          c.cell.replica < 2 ? 400 : 0;
+  for (auto& c : cells) c.scalars["chi2.x.passed"] = 98;
   const Analysis a = analyse(cfg, cells);
   for (const auto& p : find(a, "tea32", 8).passes)
-    if (p.test == "ttest") {
-      EXPECT_EQ(p.passed, 792u);
-      EXPECT_TRUE(std::isfinite(p.ci_low));
-      EXPECT_NEAR(p.ci_high, 0.99678, 2e-4);
-      EXPECT_GT(p.ci_low, 0.97);
-      EXPECT_LT(p.ci_low, 0.98);
+    if (p.test == "chi2") {
+      EXPECT_TRUE(p.decision.differs);
+      EXPECT_LT(p.ci_high, 0.999);
     }
+  const std::string table = pass_table_markdown(a, "gauss");
+  EXPECT_NE(table.find("[99.9 % CI]"), std::string::npos) << table;
+  EXPECT_NE(table.find("**0.980**"), std::string::npos) << table;
 }
 
 TEST(StudyAnalysis, BrokenCellsAreCountedNotAveraged) {
@@ -138,6 +159,111 @@ TEST(StudyAnalysis, BrokenCellsAreCountedNotAveraged) {
   EXPECT_TRUE(v.cells.empty());
   EXPECT_EQ(v.broken.size(), 6u);
   EXPECT_NE(v.verdict.find("unstable"), std::string::npos);
+}
+
+// Study-wide control is Holm over every decided test of every variant; per-variant control is Holm within each
+// variant. Both are checked against holm_adjust on the collected raw P-values.
+TEST(StudyAnalysis, ErrorControlIsHolmOverTheChosenFamily) {
+  for (const char* mode : {"study", "variant"}) {
+    const StudyConfig cfg =
+        parse_config(kConfig + "error_control = \"" + mode + "\"\n", "c.toml");
+    const Analysis a = analyse(cfg, fake_cells(cfg, 0.004));
+    EXPECT_EQ(a.error_control, std::string(mode) == "study" ? ErrorControl::study : ErrorControl::variant);
+    const auto all = decisions(a);
+    EXPECT_EQ(a.family_size, all.size());
+    if (a.error_control == ErrorControl::study) {
+      EXPECT_EQ(a.families, 1u);
+      std::vector<double> p;
+      for (const auto* d : all) p.push_back(d->p);
+      const auto adjusted = dpdrng::stats::holm_adjust(p);
+      for (std::size_t k = 0; k < all.size(); ++k) {
+        EXPECT_EQ(all[k]->p_adjusted, adjusted[k]);
+        EXPECT_EQ(all[k]->differs, adjusted[k] < a.alpha);
+      }
+      EXPECT_NE(a.error_control_sentence().find("over the whole study"), std::string::npos);
+    } else {
+      EXPECT_EQ(a.families, a.variants.size());  // every variant here has tests
+      for (const auto& v : a.variants) {
+        Analysis one;
+        one.variants.push_back(v);
+        std::vector<double> p;
+        for (const auto* d : decisions(one)) p.push_back(d->p);
+        const auto adjusted = dpdrng::stats::holm_adjust(p);
+        const auto mine = decisions(one);
+        for (std::size_t k = 0; k < mine.size(); ++k) EXPECT_EQ(mine[k]->p_adjusted, adjusted[k]);
+      }
+      EXPECT_NE(a.error_control_sentence().find("within each variant"), std::string::npos);
+    }
+  }
+}
+
+// The study-wide family is the larger one, so it never calls "differs" what per-variant control does not, and
+// some shifts are called a difference per variant but not study-wide.
+TEST(StudyAnalysis, StudyWideControlIsTheStricter) {
+  const StudyConfig study = parse_config(kConfig, "c.toml");
+  const StudyConfig variant = parse_config(kConfig + "error_control = \"variant\"\n", "c.toml");
+  bool split = false;
+  for (double shift = 0.0; shift <= 0.003; shift += 0.0001) {
+    const bool s = find(analyse(study, fake_cells(study, shift)), "tea32", 1).min_p < study.tests.alpha;
+    const bool v = find(analyse(variant, fake_cells(variant, shift)), "tea32", 1).min_p < variant.tests.alpha;
+    EXPECT_TRUE(!s || v) << "shift " << shift;
+    split |= v && !s;
+  }
+  EXPECT_TRUE(split);
+}
+
+// Bold marks and verdicts read one set of decisions: every bold cell of the observable, pass-fraction and
+// correlation tables is a "differs" decision and every such decision is bold.
+TEST(StudyReport, BoldMarksAreTheDecisions) {
+  const StudyConfig cfg = parse_config(kConfig, "c.toml");
+  auto cells = fake_cells(cfg, 0.0103);
+  for (auto& c : cells)
+    if (c.cell.generator == "tea64") c.scalars["chi2.a.passed"] = 90;
+  const Analysis a = analyse(cfg, cells);
+  std::size_t observables = 0, passes = 0;
+  for (const auto& v : a.variants) {
+    for (const auto& o : v.observables) observables += o.decision.differs;
+    for (const auto& p : v.passes) passes += p.decision.differs;
+  }
+  EXPECT_GT(observables, 0u);
+  EXPECT_GT(passes, 0u);
+  EXPECT_EQ(count(observables_markdown(a, "gauss"), "**") / 2, observables);
+  EXPECT_EQ(count(pass_table_markdown(a, "gauss"), "**") / 2, passes);
+  for (const auto& v : a.variants)
+    EXPECT_EQ(v.verdict.rfind("differs", 0) == 0, v.min_p < a.alpha) << v.verdict;
+}
+
+// A missing or unreadable reference replica leaves no verdict against it, and no decision that would mark a
+// table; the reference itself is still judged on its own tests.
+TEST(StudyAnalysis, MissingReferenceGivesNoVerdict) {
+  const StudyConfig cfg = parse_config(kConfig, "c.toml");
+  for (const char* how : {"missing", "failed"}) {
+    auto cells = fake_cells(cfg, 0.0103);
+    for (auto it = cells.begin(); it != cells.end(); ++it)
+      if (it->cell.reference && it->cell.replica == 2) {
+        if (std::string(how) == "missing") {
+          cells.erase(it);
+        } else {
+          it->status = "failed";
+          it->reason = "cannot read cells/mt19937-rep02.h5";
+        }
+        break;
+      }
+    const Analysis a = analyse(cfg, cells);
+    for (const auto& v : a.variants) {
+      if (v.key.reference) {
+        EXPECT_EQ(v.verdict.rfind("reference", 0), 0u) << v.verdict;
+        continue;
+      }
+      EXPECT_EQ(v.verdict, "no reference data (mt19937: 1 of 6 replicas missing, unreadable or failed)") << how;
+      EXPECT_TRUE(std::isnan(v.min_p));
+      EXPECT_TRUE(v.observables.empty());
+      for (const auto& p : v.passes) EXPECT_FALSE(p.decision.tested() && p.decision.differs);
+    }
+    EXPECT_EQ(count(observables_markdown(a, "gauss"), "**"), 0u);
+    EXPECT_EQ(count(pass_table_markdown(a, "gauss"), "**"), 0u);
+    EXPECT_EQ(count(summary_markdown(a), "differs"), 0u);
+  }
 }
 
 TEST(StudyReport, NistLayoutFollowsTheReference) {

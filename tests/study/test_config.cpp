@@ -86,6 +86,24 @@ TEST(StudyConfig, ErrorsNameTheKey) {
   EXPECT_NE(error_of("[study\nname = 1").find("cfg.toml:1"), std::string::npos);
 }
 
+// The error-control rule: study-wide by default; "variant" on request; anything else names the key. The
+// default leaves the canonical form (and so every existing result directory's hash) as it was.
+TEST(StudyConfig, ErrorControlIsReadStrictly) {
+  const StudyConfig def = parse_config(kMinimal, "cfg.toml");
+  EXPECT_EQ(def.tests.error_control, ErrorControl::study);
+  EXPECT_FALSE(def.canonical()["tests"].contains("error_control"));
+  const StudyConfig study = parse_config(kMinimal + "error_control = \"study\"\n", "cfg.toml");
+  EXPECT_EQ(study.hash, def.hash);
+  const StudyConfig variant = parse_config(kMinimal + "error_control = \"variant\"\n", "cfg.toml");
+  EXPECT_EQ(variant.tests.error_control, ErrorControl::variant);
+  EXPECT_NE(variant.hash, def.hash);
+  const std::string e = error_of(kMinimal + "error_control = \"none\"\n");
+  EXPECT_NE(e.find("tests.error_control"), std::string::npos) << e;
+  EXPECT_NE(e.find("\"variant\""), std::string::npos) << e;
+  EXPECT_NE(error_of(kMinimal + "error_control = 1\n").find("tests.error_control: must be a string"),
+            std::string::npos);
+}
+
 TEST(StudyConfig, ShippedConfigsParse) {
   for (const char* name : {"okada2021", "ci", "peers"}) {
     const std::string path = std::string(DPDRNG_SOURCE_DIR) + "/study/" + name + ".toml";

@@ -12,9 +12,16 @@
 
 namespace dpdrng::dpd {
 
+// Blocks (of consecutive samples, or of beads) behind the jackknife errors of the velocity PDF's error rate and
+// of D: each such error carries kStatBlocks − 1 degrees of freedom.
+inline constexpr std::size_t kStatBlocks = 20;
+
 struct Stat {
   double mean = 0, std = 0;
-  double sem = 0;  // standard error of the mean from 20 block averages (correlated samples)
+  double sem = 0;      // standard error of the mean of correlated samples, from their integrated autocorrelation time
+  double sem_dof = 0;  // degrees of freedom of sem² as a variance estimate
+  double std_sem = 0;  // standard error of std, from the autocorrelation time of (x − mean)²
+  double std_sem_dof = 0;
   std::size_t n = 0;
 };
 Stat make_stat(const std::vector<double>& samples);
@@ -28,6 +35,9 @@ struct VelocityPdf {
   // component and pooled; tails are left out because their relative error is counting noise.
   std::array<double, 3> error_rate_kT{}, error_rate_measured{};
   double error_rate_kT_mean = 0, error_rate_measured_mean = 0;
+  double error_rate_kT_mean_sem = 0;           // jackknife over the histogram's blocks (NaN with fewer than 2)
+  double error_rate_kT_mean_sem_dof = 0;       // blocks with samples − 1
+  std::vector<std::vector<double>> jackknife;  // the pooled density with one block left out, per block with samples
   std::size_t samples = 0;                     // velocity components counted per component
 };
 
@@ -35,12 +45,15 @@ struct Msd {
   std::vector<double> tau, msd;  // msd(τ) averaged over particles and time origins
   double fit_from = 0, fit_to = 0;
   double diffusion = 0;          // slope / 6 of a least-squares line over [fit_from, fit_to]
-  double diffusion_sem = 0;      // from the slopes of 4 independent quarters of the origins
+  double diffusion_sem = 0;      // jackknife over kStatBlocks groups of beads (0 with fewer than 2 beads)
+  double diffusion_sem_dof = 0;  // groups − 1
+  std::vector<std::vector<double>> jackknife;  // msd with one group of beads left out, per group
 };
 
 struct Rdf {
   std::vector<double> r, g;
   std::size_t samples = 0;
+  std::vector<std::vector<double>> jackknife;  // g with one block of samples left out, per block that has samples
 };
 
 struct Timings {

@@ -1,13 +1,14 @@
 #pragma once
 // Many small tests instead of one lucky sample: the fraction of chunks (steps, pairs) that pass a test at level
-// alpha, an exact confidence interval for it, and whether it is consistent with the 1 − alpha a good generator
-// gives.
+// alpha, its central Clopper–Pearson interval, and whether it is consistent with the 1 − alpha a good generator
+// gives (the central exact binomial test of binomial.hpp, which agrees with that interval).
 #include <cstddef>
 #include <span>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "dpdrng/stats/binomial.hpp"
 #include "dpdrng/stats/verdict.hpp"
 
 namespace dpdrng::stats {
@@ -25,17 +26,11 @@ struct PassFraction {
   double ci_low = 0.0, ci_high = 1.0;
   double confidence = 0.99;
   double expected = 0.99;          // 1 − alpha
-  double binomial_p = 1.0;         // exact two-sided test of "pass probability = 1 − alpha"
-  Verdict verdict = Verdict::not_applicable;  // pass = consistent with 1 − alpha at level 1 − confidence
+  double binomial_p = 1.0;         // central exact test of "pass probability = 1 − alpha" (binomial.hpp)
+  // pass = consistent with 1 − alpha at level 1 − confidence, i.e. the interval above contains 1 − alpha
+  Verdict verdict = Verdict::not_applicable;
   std::string reason;
 };
-
-// Clopper–Pearson ("exact") interval for a binomial proportion from GSL's beta quantiles. Returns {low, high}.
-std::pair<double, double> clopper_pearson(std::size_t successes, std::size_t trials, double confidence);
-
-// Exact two-sided binomial test P-value, R's binom.test convention: the total probability of every outcome no
-// more likely than the observed one (relative tolerance 1e-7, as R uses).
-double binomial_test_p(std::size_t successes, std::size_t trials, double p);
 
 PassFraction pass_fraction(std::size_t passed, std::size_t trials, const PassFractionOptions& options = {});
 PassFraction pass_fraction(std::span<const Verdict> verdicts, const PassFractionOptions& options = {});

@@ -1,13 +1,14 @@
 #pragma once
 // From stored cells to verdicts: cells that differ only by replica form a variant; every variant is compared
-// with the reference (MT19937) variant of the same distribution and Δt. Each comparison carries its noise
-// floor (what MT-vs-MT comparisons give with the same number of replicas) and a P-value, so a difference is
-// only called a difference when the replicas resolve it.
+// with the reference (MT19937) variant of the same distribution and Δt. Every comparison is a test with a
+// P-value on its own scale; the study's error control (Holm over the whole study, or over each variant) turns
+// the P-values into one set of decisions, and every verdict, bold mark and chart of the report reads those.
+#include <cmath>
 #include <map>
-#include <optional>
 #include <string>
 #include <vector>
 
+#include "dpdrng/stats/mean_tests.hpp"
 #include "dpdrng/study/cell_result.hpp"
 #include "dpdrng/study/config.hpp"
 
@@ -26,32 +27,58 @@ struct VariantKey {
 };
 VariantKey variant_of(const Cell& cell);
 
+// One test behind a verdict and what the error control decided on it.
+struct Decision {
+  double p = NAN;           // the test's own P-value; NaN when it could not be made (not part of any family)
+  double p_adjusted = NAN;  // Holm-adjusted within the family
+  bool differs = false;     // p_adjusted < α
+  bool tested() const { return std::isfinite(p); }
+};
+
 // One observable of one variant against the reference.
 struct Comparison {
   std::string observable;   // "temperature_mean", "vpdf_vs_mt", ...
   std::size_t n = 0, n_ref = 0;
-  double value = 0, value_sd = 0;  // mean and spread over replicas
-  double ref = 0, ref_sd = 0;
-  double error_rate = 0;    // |value − ref| / |ref| for scalars (|value − ref| for observables that are themselves
-                            // error rates); mean relative curve deviation for curves
-  double noise_floor = 0;   // the same quantity for MT against MT (1σ for scalars)
-  double p_value = 1;       // Welch's t-test of "no difference" (NaN when replicas cannot tell); paired t below
+  double value = NAN, value_sd = NAN;  // mean and spread over replicas
+  double ref = NAN, ref_sd = NAN;
+  // Scalars: |value − ref| / |ref| (|value − ref| for observables that are themselves error rates, and for the
+  // bilayer's); curves: mean relative deviation of the variant's mean curve from the reference's over the
+  // bins tested.
+  double error_rate = NAN;
+  // Scalars: the 1σ of error_rate if the variant were the reference, from the pooled variance (both groups'
+  // replica spreads and every run's own standard error). NaN for curves.
+  double sigma = NAN;
+  const char* test = "";    // "t", "paired t", "F" (a literal)
+  double statistic = NAN;   // t, or F
+  double dof = NAN, dof2 = NAN;  // of t; of F: d and d(n + m − 2)
+  Decision decision;
   bool available = false;
   std::string note;
   // Bilayer scalars are compared replica by replica (each replica starts every generator from one state):
-  // mean of value − ref over the replicas both have, its 95 % CI half-width, and p_value is the paired t-test.
+  // mean of value − ref over the replicas both have and its 95 % CI half-width.
   bool paired = false;
   double diff = NAN, diff_ci = NAN;
   std::size_t n_pairs = 0;
 };
 
-// A pass fraction pooled over a variant's replicas (χ² over steps, lag-1 t over pairs).
+// A pass fraction pooled over a variant's replicas (χ² over steps, lag-1 t over pairs): its central
+// Clopper–Pearson interval at 1 − α and the central binomial test against 1 − α.
 struct PassSummary {
   std::string test;    // "chi2", "ttest"
   std::string stream;  // "x" (one word per call), "a"/"b" (64TEA, Philox, ...)
   std::size_t trials = 0, passed = 0;
-  double fraction = 0, ci_low = 0, ci_high = 1;
-  double binomial_p = 1;  // vs the 1 − α a good generator gives
+  double fraction = NAN, ci_low = 0, ci_high = 1;
+  Decision decision;   // decision.p: the binomial test's P-value
+  bool available = false;
+};
+
+// The correlation of ζ between neighbouring pairs ("pair") or consecutive steps of a pair ("time"): each
+// replica's test combined over the replicas (Stouffer), the largest |r| shown.
+struct CorrelationSummary {
+  std::string what;  // "pair", "time"
+  std::size_t replicas = 0;
+  double worst_r = NAN;
+  Decision decision;
   bool available = false;
 };
 
@@ -70,27 +97,34 @@ struct VariantReport {
   std::vector<const CellResult*> broken;  // unstable or failed
   std::vector<Comparison> observables;
   std::vector<PassSummary> passes;
+  std::vector<CorrelationSummary> correlations;
   std::vector<NistRow> nist;             // from the first cell that ran the battery
   std::string nist_cell;
   std::string nist_report;               // the battery's own finalAnalysisReport text, when stored
   double nist_sequences = 0, nist_failed = NAN, nist_columns = 0;
   double ns_per_number = NAN, step_ms = NAN, rng_share = NAN;
-  std::string verdict;       // "indistinguishable from MT at this sample size" / "differs (p = …: …)" / "no data"
-  double min_p = 1;          // smallest Bonferroni-adjusted P-value behind the verdict
+  // Why this variant has no verdict against the reference (empty when it has one): its reference replicas
+  // are missing, unreadable or failed.
+  std::string no_reference;
+  std::string verdict;       // "indistinguishable from MT at this sample size" / "differs (p = …: …)" / ...
+  double min_p = NAN;        // smallest adjusted P-value behind the verdict (NaN: nothing tested)
   std::string min_p_what;
-  double worst_error_over_floor = NAN;  // max over observables of error_rate / noise_floor
 };
 
 struct Analysis {
   double alpha = 0.01;
+  ErrorControl error_control = ErrorControl::study;
+  std::size_t family_size = 0;  // tests in the study's family (study control), or in all families together
+  std::size_t families = 0;     // 1 under study control, the variants with a test under variant control
   bool bilayer = false;  // the membrane scene: physics only, absolute differences, paired tests
   std::vector<VariantReport> variants;  // reference variants first, then in sweep order
   const VariantReport* reference_for(const VariantKey& k) const;
+  std::string error_control_sentence() const;  // the rule, in words, for the report
 };
 
 Analysis analyse(const StudyConfig& config, const std::vector<CellResult>& cells);
 
-// The bilayer scene's scalars: cells store <name>_mean, _std and _sem (measure.hpp).
+// The bilayer scene's scalars: cells store <name>_mean, _std, _sem and _sem_dof (measure.hpp).
 struct BilayerObservable {
   const char* name;   // "tension"
   const char* label;  // "Σ"
@@ -108,16 +142,7 @@ struct ReplicaMean {
 ReplicaMean replica_mean(const std::vector<const CellResult*>& cells, const std::string& name,
                          const std::string& sem_name);
 
-// Two-sided paired t-test of x against y on the replicas both hold (x, y: replica → value); NaN below 2 pairs.
-struct PairedTest {
-  std::size_t n = 0;
-  double diff = NAN, ci95 = NAN, p_value = NAN;
-};
-PairedTest paired_test(const std::map<int, double>& x, const std::map<int, double>& y);
-
 // Mean relative deviation of `curve` from `ref` over the bins where ref >= threshold (NaN if none).
 double curve_error(const std::vector<double>& curve, const std::vector<double>& ref, double threshold);
-// Two-sided Welch t-test of equal means; NaN when either sample has fewer than 2 values or no spread.
-double welch_p(const std::vector<double>& x, const std::vector<double>& y);
 
 }  // namespace dpdrng::study

@@ -34,8 +34,15 @@ struct SceneParams {
   bool is_bilayer() const { return name == "bilayer"; }
 };
 
+// Which family of tests the report holds at family-wise error rate α (Holm's procedure): every comparison of
+// every variant in the study, or each variant's own comparisons (then a study of k variants can raise up to
+// k false alarms at α each).
+enum class ErrorControl { study, variant };
+const char* to_string(ErrorControl e);
+
 struct TestParams {
   double alpha = 0.01;
+  ErrorControl error_control = ErrorControl::study;
   long chi2_steps = 0;        // production steps sampled for the χ² pass fraction; 0 = every one
   long ttest_pairs = 100;     // pairs whose series get the lag-1 t-test
   long nist_sequences = 1000;

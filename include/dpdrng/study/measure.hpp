@@ -2,15 +2,17 @@
 // The measurements of one cell, as small adapters over the engine (dpd::run_water) and the statistical tests
 // (stats::chi2_uniform, stats::lag1_ttest, stats::nist). Each adapter writes named scalars and series into
 // the CellResult; the names are what analysis.cpp and report.cpp read:
-//   physics  temperature_mean/_std/_sem, pressure_mean, pressure_conservative_mean, pressure_xx/yy/zz,
-//            diffusion_coefficient, vpdf_error_mb, momentum_drift; series temperature, vpdf/v, vpdf/p,
-//            vpdf/mb, msd/tau, msd/msd, rdf/r, rdf/g
+//   physics  temperature_mean/_std/_sem/_std_sem, pressure_mean/_sem, pressure_conservative_mean,
+//            pressure_xx/yy/zz, diffusion_coefficient/diffusion_sem, vpdf_error_mb/_sem, momentum_drift (each _sem
+//            the run's own standard error, its degrees of freedom in _sem_dof); series temperature, vpdf/v,
+//            vpdf/p, vpdf/mb, msd/tau, msd/msd, rdf/r, rdf/g; matrices vpdf/jackknife, msd/jackknife,
+//            rdf/jackknife (the curve with one block of samples, or of beads for the MSD, left out: a row a block)
 //   tests    chi2.<s>.trials/passed/fraction, ttest.<s>.…, with s = x (one word a call) or a, b (two words);
 //            series chi2/<s>/p, ttest/<s>/p; corr.pair.r/p, corr.time.r/p
 //   nist     nist/test, nist/variant (strings), nist/passed, nist/applicable, nist/p_uniformity (series),
 //            nist/histogram (rows × 10)
 //   cost     cost.ns_per_number, cost.step_seconds, cost.run_seconds, cost.rng_share, cost.numbers_per_step
-//   bilayer  <obs>_mean/_std/_sem for obs in temperature, pressure, pressure_xx/yy/zz, tension (L_z[P_zz −
+//   bilayer  <obs>_mean/_std/_sem/_sem_dof for obs in temperature, pressure, pressure_xx/yy/zz, tension (L_z[P_zz −
 //            (P_xx+P_yy)/2]), tension_conservative, thickness (head peak to peak), head_separation, tail_order;
 //            lipids_out_max, momentum_drift; series profile/z (relative to the midplane), profile/head,
 //            profile/tail, profile/water, order_by_bond, series/step, series/temperature, series/tension
