@@ -28,6 +28,11 @@ void expect_bad(const std::string& args, const std::string& names) {
   EXPECT_NE(r.err.find(names), std::string::npos) << args << ": " << r.err;
 }
 
+// Each {arguments, what the message names} after `prefix`.
+void expect_all_bad(const std::string& prefix, const std::vector<std::pair<std::string, std::string>>& cases) {
+  for (const auto& [args, names] : cases) expect_bad(prefix + args, names);
+}
+
 // A file under the test's scratch name, holding `bytes`.
 std::string file_with(const std::string& suffix, const std::string& bytes) {
   const std::string p = scratch(suffix);
@@ -75,16 +80,16 @@ TEST(BadInput, NistLinearComplexityShortBlocks) {
 
 TEST(BadInput, NistTestParametersBeforeAnyWork) {
   // Refused before the input is even opened: the file does not exist, yet the parameter is what is named.
-  const std::string none = scratch(".missing");
-  expect_bad("nist block-frequency -i " + none + " --block-length -5", "--block-length -5");
-  expect_bad("nist non-overlapping-template -i " + none + " --template-length 40", "--template-length 40");
-  expect_bad("nist non-overlapping-template -i " + none + " --blocks 0", "--blocks 0");
-  expect_bad("nist overlapping-template -i " + none + " --K 0", "--K 0");
-  expect_bad("nist overlapping-template -i " + none + " --template-length 9 --block-length 8", "--block-length 8");
-  expect_bad("nist serial -i " + none + " --template-length 1", "--template-length 1");
-  expect_bad("nist approximate-entropy -i " + none + " --template-length 30", "--template-length 30");
-  expect_bad("nist -i " + none + " --serial-m 99", "--serial-m 99");
-  expect_bad("nist -i " + none + " --tests Runs --universal-L 1 --streams 2", "--stream-bits");
+  expect_all_bad("nist -i " + scratch(".missing") + " ",
+                 {{"block-frequency --block-length -5", "--block-length -5"},
+                  {"non-overlapping-template --template-length 40", "--template-length 40"},
+                  {"non-overlapping-template --blocks 0", "--blocks 0"},
+                  {"overlapping-template --K 0", "--K 0"},
+                  {"overlapping-template --template-length 9 --block-length 8", "--block-length 8"},
+                  {"serial --template-length 1", "--template-length 1"},
+                  {"approximate-entropy --template-length 30", "--template-length 30"},
+                  {"--serial-m 99", "--serial-m 99"},
+                  {"--tests Runs --universal-L 1 --streams 2", "--stream-bits"}});
   // A battery parameter is not checked for tests that are not run.
   const std::string f = file_with(".raw", random_bytes(2000, 4));
   EXPECT_EQ(run("nist -i " + f + " --format raw --tests runs --serial-m 99").code, 0);
@@ -115,13 +120,13 @@ TEST(BadInput, NistAsciiRefusesBinaryInput) {
 }
 
 TEST(BadInput, NistStreamOptions) {
-  const std::string f = file_with(".raw", random_bytes(4000, 7));
-  expect_bad("nist -i " + f + " --format raw --streams 3 --stream-bits 0", "--stream-bits: '0' is out of range");
-  expect_bad("nist -i " + f + " --format raw --streams 3", "--streams needs --stream-bits");
-  expect_bad("nist -i " + f + " --format raw --stream-bits 64", "--stream-bits needs --streams");
-  expect_bad("nist -i " + f + " --format raw --streams -3 --stream-bits 10", "'-3'");
-  expect_bad("nist -i " + f + " --format raw --streams 99999 --stream-bits 99999", "fewer than");
-  expect_bad("nist -i " + f + " --format raw --streams 4294967296 --stream-bits 4294967296", "more bits than");
+  expect_all_bad("nist --format raw -i " + file_with(".raw", random_bytes(4000, 7)) + " ",
+                 {{"--streams 3 --stream-bits 0", "--stream-bits: '0' is out of range"},
+                  {"--streams 3", "--streams needs --stream-bits"},
+                  {"--stream-bits 64", "--stream-bits needs --streams"},
+                  {"--streams -3 --stream-bits 10", "'-3'"},
+                  {"--streams 99999 --stream-bits 99999", "fewer than"},
+                  {"--streams 4294967296 --stream-bits 4294967296", "more bits than"}});
 }
 
 TEST(BadInput, TtestOfHugeValues) {

@@ -14,6 +14,7 @@
 #include <map>
 #include <thread>
 
+#include "config_text.hpp"
 #include "dpdrng/study/store.hpp"
 
 using namespace dpdrng::study;
@@ -227,24 +228,11 @@ TEST(StudyCli, ABlownUpRunIsRecordedAsUnstableAndTheSweepGoesOn) {
 // lists it as unreadable (in the report too) instead of silently counting it as missing.
 TEST(StudyCli, UnreadableCellsAreNamedRecomputedAndReported) {
   TempDir tmp;
-  write(tmp.path / "two.toml", R"(
-[study]
-name = "two"
-replicas = 1
-[sweep]
-distributions = ["gauss"]
-[[sweep.generator]]
-name = "tea32"
-rounds = [1]
-[scene]
-particles = 32
-steps = 60
-equilibrate = 20
-[tests]
-chi2_steps = 2
-ttest_pairs = 2
-nist_generators = []
-)");
+  // Two cells: tea32(1) and its reference, no NIST.
+  using config_text::with;
+  write(tmp.path / "two.toml",
+        with(with(with(kTiny, "replicas = 3", "replicas = 1"), "rounds = [1, 8]", "rounds = [1]"),
+             "nist_generators = [\"tea32\"]", "nist_generators = []"));
   const std::string out = (tmp.path / "out").string();
   const std::string run = "study run '" + (tmp.path / "two.toml").string() + "' --out '" + out + "'";
   std::string err;

@@ -31,6 +31,14 @@ struct TempDir {
   ~TempDir() { fs::remove_all(path); }
 };
 
+// A fresh store of kConfig in its own directory.
+struct OpenStore {
+  TempDir tmp;
+  StudyConfig cfg = parse_config(kConfig, "c.toml");
+  Store store{tmp.path};
+  OpenStore() { store.open_for(cfg); }
+};
+
 MeasureFn as_fn(fake::FakeMeasure& f) {
   return [&f](const Cell& c, const StudyConfig& cfg, int t) { return f(c, cfg, t); };
 }
@@ -68,10 +76,9 @@ FileId file_id(const fs::path& p) {
 }  // namespace
 
 TEST(StudyStore, CellRoundTripsThroughHdf5) {
-  TempDir tmp;
-  const StudyConfig cfg = parse_config(kConfig, "c.toml");
-  Store store(tmp.path);
-  store.open_for(cfg);
+  OpenStore s;
+  const StudyConfig& cfg = s.cfg;
+  Store& store = s.store;
   CellResult r;
   r.cell = enumerate_cells(cfg)[1];
   r.status = "unstable";
@@ -223,10 +230,9 @@ TEST(StudyStore, AFailingCellIsRecordedAndTheSweepGoesOn) {
 }
 
 TEST(StudyStore, UnreadableCellFilesAreNamedWithTheirReason) {
-  TempDir tmp;
-  const StudyConfig cfg = parse_config(kConfig, "c.toml");
-  Store store(tmp.path);
-  store.open_for(cfg);
+  OpenStore s;
+  const StudyConfig& cfg = s.cfg;
+  Store& store = s.store;
   fake::FakeMeasure m;
   run_study(cfg, store, RunOptions{}, as_fn(m));
   const auto cells = enumerate_cells(cfg);
@@ -273,9 +279,9 @@ TEST(StudyStore, UnreadableCellFilesAreNamedWithTheirReason) {
   std::ostringstream progress;
   RunOptions o;
   o.progress = &progress;
-  const RunSummary s = run_study(cfg, store, o, as_fn(m));
-  EXPECT_EQ(s.computed, 5u);
-  EXPECT_EQ(s.unreadable.size(), 4u);
+  const RunSummary sum = run_study(cfg, store, o, as_fn(m));
+  EXPECT_EQ(sum.computed, 5u);
+  EXPECT_EQ(sum.unreadable.size(), 4u);
   for (std::size_t k = 0; k < 4; ++k)
     EXPECT_NE(progress.str().find("warning: " + store.cell_path(cells[k]).string() + " is unreadable"),
               std::string::npos)
@@ -288,12 +294,10 @@ TEST(StudyStore, UnreadableCellFilesAreNamedWithTheirReason) {
 // Fuzzing found HDF5's parser copying 21 GB out of a cell file with one damaged length (memcpy-param-overlap in
 // H5HG_read): a file whose bytes differ from its checksum block is unreadable before HDF5 sees it.
 TEST(StudyStore, AlteredCellFileNeverReachesHdf5) {
-  TempDir tmp;
-  const StudyConfig cfg = parse_config(kConfig, "c.toml");
-  Store store(tmp.path);
-  store.open_for(cfg);
+  OpenStore s;
+  Store& store = s.store;
   CellResult r;
-  r.cell = enumerate_cells(cfg)[0];
+  r.cell = enumerate_cells(s.cfg)[0];
   r.reason = std::string(300, 'x');
   store.save(r);
   const fs::path p = store.cell_path(r.cell);
