@@ -70,6 +70,7 @@ void merge(const std::vector<std::string>& dirs, const std::string& out_dir) {
 void report(const std::string& dir, bool charts) {
   Store store(dir);
   const StudyConfig config = store.stored_config();
+  prepare_output_directory(store.dir() / "report", "study report: the report directory");
   if (fs::exists(store.dir() / "cells")) store.assemble(config);
   ReportOptions o;
   o.charts = charts;

@@ -221,6 +221,14 @@ TEST(BadInput, StudyRunThreadsAndOut) {
   expect_bad("study cells " + cfg + " --shard 1/0", "--shard: N");
   expect_bad("study cells " + cfg + " --shard 2", "not k/N");
   EXPECT_FALSE(fs::exists(out));
+  // A report directory that cannot be made is refused before anything is read or written.
+  const std::string dir = scratch(".study");
+  fs::create_directories(dir);
+  std::ofstream(dir + "/study.toml") << std::ifstream(cfg).rdbuf();
+  std::ofstream(dir + "/report") << "a file where the report directory goes";
+  expect_bad("study report " + dir, "report directory " + dir + "/report: exists and is not a directory");
+  EXPECT_FALSE(fs::exists(dir + "/study.h5"));
+  fs::remove_all(dir);
 }
 
 TEST(BadInput, SimulateTinyStepAndDensity) {
