@@ -67,7 +67,8 @@ const ByteWalk kByteWalk;
 
 // sts-2.1.2's cusum p-value, kept with its C integer divisions (truncation toward zero), see the header.
 // Every non-empty walk reaches |S| = 1, so z = 1 has P = 1 exactly; the reference's truncated sums give up to
-// 1.10 there (n <= 52), which is no probability.
+// 1.10 there (n <= 52), which is no probability. For z >= 2 they leave [0, 1] only by round-off (at most 1e-12,
+// checked for every n <= 3000), which the clamp at the end removes.
 double cusum_p(long n, long z) {
   if (z <= 1) return 1.0;
   const double sn = std::sqrt(static_cast<double>(n));
@@ -76,7 +77,7 @@ double cusum_p(long n, long z) {
     sum1 += normal_cdf(((4 * k + 1) * z) / sn) - normal_cdf(((4 * k - 1) * z) / sn);
   for (long k = (-n / z - 3) / 4; k <= (n / z - 1) / 4; ++k)
     sum2 += normal_cdf(((4 * k + 3) * z) / sn) - normal_cdf(((4 * k + 1) * z) / sn);
-  return 1.0 - sum1 + sum2;
+  return std::clamp(1.0 - sum1 + sum2, 0.0, 1.0);
 }
 
 }  // namespace
