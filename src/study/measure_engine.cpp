@@ -1,5 +1,6 @@
 // The engine side of a cell: which steps and pairs to tap, the WaterConfig, and the RunResult's observables.
 #include <algorithm>
+#include <cstdio>
 #include <set>
 
 #include "dpdrng/common/error.hpp"
@@ -64,7 +65,10 @@ void validate_scene(const StudyConfig& config) {
       else
         engine_config(c, config, 1, TapPlan{}).validate();
     } catch (const InputError& e) {
-      throw InputError("study config " + config.name + ": scene (dt = " + std::to_string(c.dt) + "): " + e.what());
+      // %g: std::to_string would print a dt of 1e-300 as 0.000000.
+      char dt[32];
+      std::snprintf(dt, sizeof dt, "%g", c.dt);
+      throw InputError("study config " + config.name + ": scene (dt = " + dt + "): " + e.what());
     }
   }
 }

@@ -236,6 +236,12 @@ TEST(BadInput, SimulateTinyStepAndDensity) {
   expect_bad("simulate --density 1e-300", "invalid density");
   expect_bad("simulate --density 1e-4 --pairs cells", "more than 64 a bead");
   expect_bad("simulate-bilayer --dt-warmup 1e-300", "invalid dt_warmup");
+  // The same rule in a study config, named with the dt as written.
+  std::ifstream ci(std::string(DPDRNG_SOURCE_DIR) + "/study/ci.toml");
+  std::string cfg((std::istreambuf_iterator<char>(ci)), {});
+  cfg.replace(cfg.find("[scene]"), 7, "[scene]\ndt = 1e-300");
+  expect_bad("study run " + file_with(".toml", cfg) + " --out " + scratch(".out"), "scene (dt = 1e-300): invalid dt");
+  EXPECT_FALSE(fs::exists(scratch(".out")));
   // The smallest step the rule allows for the default box still runs.
   EXPECT_EQ(run("simulate -n 64 --steps 20 --equilibrate 10 -q --dt 1e-8").code, 0);
 }
