@@ -100,7 +100,8 @@ TEST(StudyAnalysis, RunErrorsArePooledWithTheReplicaSpreads) {
     c.scalars["temperature_sem"] = 0.002;
     c.scalars["temperature_sem_dof"] = 19;
   }
-  const Comparison& t = comparison(find(analyse(cfg, cells), "tea32", 8), "temperature_mean");
+  const Analysis a = analyse(cfg, cells);  // held: the comparison below refers into it
+  const Comparison& t = comparison(find(a, "tea32", 8), "temperature_mean");
   EXPECT_EQ(t.dof, 10.0 + 12 * 19);
   EXPECT_NEAR(t.sigma, 0.002 * std::sqrt(12.0 * 19 / t.dof) * std::sqrt(2.0 / 6) / 1.03, 1e-15);
   EXPECT_EQ(t.decision.p, 1.0);
