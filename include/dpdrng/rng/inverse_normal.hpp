@@ -54,6 +54,17 @@ inline constexpr double kFarQ[] = {0x1.0000000000000p+0,  0x1.7e73a86fa0215p-2, 
 
 // The coefficient of the selected piece: selects, not an indexed load, so that SIMD lanes need no gather.
 inline double pick(bool centre, bool far, double c, double n, double f) { return centre ? c : (far ? f : n); }
+
+// P(x)/Q(x) of one piece, by the same operations in the same order as the selecting form below.
+inline double rational(double x, const double* p, const double* q) {
+  double num = p[kDegree], den = q[kDegree];
+#pragma GCC unroll 8
+  for (int k = kDegree - 1; k >= 0; --k) {
+    num = std::fma(num, x, p[k]);
+    den = std::fma(den, x, q[k]);
+  }
+  return num / den;
+}
 }  // namespace inverse_normal_detail
 
 // The parts before and after the one square root, so that the batched form can take it with the SIMD
@@ -82,7 +93,16 @@ inline double inverse_normal_finish(double u, double t) {
   return scale * (num / den);
 }
 
-inline double inverse_normal(double u) { return inverse_normal_finish(u, std::sqrt(inverse_normal_radius2(u))); }
+// The scalar form branches where the batched one selects: the centre (85 % of uniforms) skips the log and the
+// square root. Each branch runs the operations the selecting form runs for that piece, so the bits agree.
+inline double inverse_normal(double u) {
+  using namespace inverse_normal_detail;
+  const double q = u - 0.5;
+  if (std::fabs(q) <= 0.425) return q * rational(std::fma(-q, q, kCentreEdge), kCentreP, kCentreQ);
+  const double t = std::sqrt(inverse_normal_radius2(u));
+  const double z = t > kFarShift ? rational(t - kFarShift, kFarP, kFarQ) : rational(t - kNearShift, kNearP, kNearQ);
+  return q < 0.0 ? -1.0 * z : 1.0 * z;
+}
 
 // z[i] = inverse_normal(u[i]) for i < n, bit for bit, eight at a time.
 inline void inverse_normal(const double* u, double* z, std::size_t n) {
