@@ -346,3 +346,21 @@ TEST(BadInput, DirectoryGivenAsInput) {
   const std::string empty = file_with(".empty", "");
   expect_bad("nist -i " + empty, "no bits in the input");
 }
+
+TEST(BadInput, MomentsGofChi2dRefuseBadInput) {
+  const std::string text = file_with(".txt", "0.1\n0.2\n0.3\n0.4\n0.5\n0.6\n");
+  const std::string outside = file_with(".big", "0.1\n1.5\n");
+  const std::string truncated = file_with(".raw", std::string(12, '\x01'));
+  const std::string nan = file_with(".f64", doubles({0.1, std::nan(""), 0.3}));
+  expect_all_bad("moments -f text -i " + text,
+                 {{" --confidence 1", "--confidence"}, {" --second-moment nan", "--second-moment"}});
+  expect_bad("moments -f f64 -i " + nan, "not a finite number");
+  expect_bad("moments -f u64 -i " + truncated, "not a whole number of 8-byte words");
+  expect_bad("gof -f text -i " + text + " --target cauchy", "--target");
+  expect_bad("gof -f f64 -i " + nan, "not a finite number");
+  expect_all_bad("chi2d -f text -i " + text, {{" --bins 1", "--bins"}, {" --pairs halves", "--pairs halves"},
+                                              {" --pairs thirds", "--pairs"}});
+  expect_bad("chi2d -f text -i " + outside, "outside [0,1)");
+  expect_bad("chi2d -f u64 -i " + truncated, "not a whole number of 8-byte words");
+  expect_bad("chi2d -f u64 -i " + scratch(".none"), "cannot open");
+}

@@ -27,7 +27,8 @@ struct AndersonDarlingResult {
 
 // P(A² < z) for n → ∞ and for finite n, after Marsaglia & Marsaglia (2004), "Evaluating the Anderson–Darling
 // distribution", J. Stat. Software 9(2): their approximation ADinf of the limiting distribution and their
-// correction errfix(n, ADinf) for finite n, stated there to be within 2e-6 (asymptotic) for every z.
+// correction errfix(n, ADinf) for finite n. The limit agrees within 2e-5 with an independent numerical inversion
+// of its characteristic function (tests/stats/test_anderson_darling.cpp).
 double anderson_darling_cdf_limit(double z);
 double anderson_darling_cdf(std::size_t n, double z);
 
