@@ -40,6 +40,12 @@ TEST(AndersonDarling, LimitMatchesAnIndependentInversionAndPublishedPoints) {
   for (const auto& [z, tail] : reference) EXPECT_NEAR(1 - anderson_darling_cdf_limit(z), tail, 2e-5) << z;
   EXPECT_NEAR(1 - anderson_darling_cdf_limit(1.933), 0.10, 1e-4);
   EXPECT_NEAR(1 - anderson_darling_cdf_limit(2.492), 0.05, 1e-4);
+  // Beyond z = 8 the leading asymptotic term; the inversion gives 1.32759e-5 at z = 10 and 1.13709e-4 at z = 8.
+  EXPECT_NEAR(anderson_darling_p(1000000, 10.0) / 1.32759e-5, 1.0, 0.02);
+  EXPECT_NEAR(anderson_darling_p(1000000, 8.0) / 1.13709e-4, 1.0, 0.03);
+  EXPECT_NEAR(anderson_darling_p(1000000, 8.0 + 1e-9) / 1.13709e-4, 1.0, 0.04);
+  EXPECT_GT(anderson_darling_p(1000000, 30.0), 0.0);  // tiny, not a floor set by the correction's residual
+  EXPECT_LT(anderson_darling_p(1000000, 30.0), 1e-12);
   // The finite-n correction vanishes as n grows and stays small at n = 10.
   EXPECT_NEAR(anderson_darling_cdf(1000000, 2.492), anderson_darling_cdf_limit(2.492), 1e-6);
   EXPECT_NEAR(anderson_darling_cdf(10, 2.492), anderson_darling_cdf_limit(2.492), 5e-3);
