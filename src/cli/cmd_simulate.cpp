@@ -2,6 +2,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <sstream>
 #include <iostream>
 #include <memory>
 
@@ -11,6 +12,7 @@
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/common/output.hpp"
 #include "dpdrng/dpd/water.hpp"
+#include "dpdrng/stats/power_sums.hpp"
 #include "bilayer_cli.hpp"
 #include "csv_out.hpp"
 
@@ -36,6 +38,39 @@ void write_series(const std::filesystem::path& dir, const dpd::RunResult& r) {
   write_csv(dir / "rdf.csv", {"r", "g"}, {&r.rdf.r, &r.rdf.g});
 }
 
+stats::Moments zeta_moments(const dpd::ZetaSums& z) {
+  return stats::moments(stats::PowerSums{z.n, z.s1, z.s2, z.s3, z.s4});
+}
+
+// The ζ of every production step's pairs inside r_c (none drawn: n = 0, the rest null).
+nlohmann::json zeta_json(const dpd::ZetaSums& z) {
+  const stats::Moments m = zeta_moments(z);
+  nlohmann::json j = {{"n", m.n}};
+  if (m.variance > 0)
+    j.update({{"mean", m.mean},
+              {"mean_se", m.mean_se},
+              {"variance", m.variance},
+              {"variance_ci", {m.variance_ci.lo, m.variance_ci.hi}},
+              {"second_moment", m.second_moment},
+              {"second_moment_ci", {m.second_moment_ci.lo, m.second_moment_ci.hi}},
+              {"second_moment_p", m.second_moment_p},
+              {"skewness", m.skewness},
+              {"kurtosis", m.kurtosis},
+              {"confidence", 0.95}});
+  else
+    for (const char* k : {"mean", "variance", "variance_ci", "skewness", "kurtosis"}) j[k] = nullptr;
+  return j;
+}
+
+std::string zeta_line(const dpd::RunResult& r) {
+  const stats::Moments m = zeta_moments(r.zeta);
+  if (dpd::blew_up(r.status) || !(m.variance > 0)) return "n/a";
+  std::ostringstream o;
+  o << "variance " << std::setprecision(5) << m.variance << " [" << m.variance_ci.lo << ", " << m.variance_ci.hi
+    << "] (95 %), kurtosis " << std::setprecision(4) << m.kurtosis << ", n " << m.n;
+  return o.str();
+}
+
 void print_human(const dpd::RunResult& r) {
   // A run that blew up has no observables: "n/a", never a number.
   const bool na = dpd::blew_up(r.status);
@@ -52,7 +87,7 @@ void print_human(const dpd::RunResult& r) {
     return na ? std::string("n/a") : o.str();
   };
   std::cout << "scene water: " << r.particles << " beads, box " << r.box_length << ", pairs " << r.pairs << ", "
-            << r.generator << " / " << r.seeding << " / " << r.distribution
+            << r.generator << " / " << r.seeding << " / " << r.distribution << " / feed " << r.feed
             << (r.integrator == "mvv" ? "" : ", integrator " + r.integrator) << "\n"
             << "status                 " << r.status << " (" << r.steps_done << " steps)\n"
             << "temperature k_BT       " << pm(r.temperature) << "\n"
@@ -65,6 +100,7 @@ void print_human(const dpd::RunResult& r) {
                          num(r.velocity_pdf.error_rate_measured_mean) + " (at measured T)")
             << "\n"
             << "momentum drift / bead  " << r.momentum_drift << "\n"
+            << "zeta (pairs in r_c)    " << zeta_line(r) << "\n"
             << "time                   " << r.timings.total_s << " s, " << r.timings.particle_steps_per_s
             << " particle-steps/s, " << r.timings.threads << " thread(s)\n"
             << "random numbers         " << r.timings.random_numbers << ", " << r.timings.ns_per_number
@@ -88,8 +124,11 @@ void run_simulate(SimulateArgs& a) {
     };
   const dpd::RunResult r = dpd::run_water(cfg, hooks);
   if (!a.run.series_dir.empty()) write_series(a.run.series_dir, r);
-  if (a.run.json)
-    std::cout << dpd::to_json(r, false).dump(2) << "\n";
+  if (a.run.json) {
+    nlohmann::json j = dpd::to_json(r, false);
+    j["zeta"] = dpd::blew_up(r.status) ? nlohmann::json(nullptr) : zeta_json(r.zeta);
+    std::cout << j.dump(2) << "\n";
+  }
   else
     print_human(r);
 }
