@@ -21,6 +21,7 @@
 #include "dpdrng/cli/checked.hpp"
 #include "dpdrng/cli/registry.hpp"
 #include "dpdrng/common/error.hpp"
+#include "dpdrng/rng/inverse_normal.hpp"
 #include "dpdrng/rng/stream.hpp"
 #include "dpdrng/stats/summary.hpp"
 
@@ -40,10 +41,24 @@ struct BenchArgs {
 // Modes, in table order. scalar: independent calls one at a time, each output forced into a register
 // (benchmark::DoNotOptimize), so consecutive calls may overlap in the pipeline but are never vectorised.
 // batch: fill_stream() into an L1-resident buffer. scalar-/batch- uniform and gauss: one number per call
-// through the scalar draw<>() and through fill_noise().
-enum class Mode { scalar, batch, scalar_uniform, scalar_gauss, uniform, gauss };
-constexpr Mode kModes[] = {Mode::scalar, Mode::batch, Mode::scalar_uniform, Mode::scalar_gauss, Mode::uniform,
-                           Mode::gauss};
+// through the scalar draw<>() and through fill_noise(). scalar-/batch- inverse: one Gaussian number per call
+// through the inverse normal CDF of the block's first word (to_unit_mid, inverse_normal.hpp), scalar and batched
+// (fill_stream(), then the batched Φ⁻¹): the alternative to Box–Muller's pairing of two uniforms.
+enum class Mode { scalar, batch, scalar_uniform, scalar_gauss, scalar_inverse, uniform, gauss, inverse };
+constexpr Mode kModes[] = {Mode::scalar,         Mode::batch,   Mode::scalar_uniform, Mode::scalar_gauss,
+                           Mode::scalar_inverse, Mode::uniform, Mode::gauss,          Mode::inverse};
+
+bool is_scalar(Mode m) {
+  return m == Mode::scalar || m == Mode::scalar_uniform || m == Mode::scalar_gauss || m == Mode::scalar_inverse;
+}
+
+// One number from a block, as the scalar modes draw it.
+template <std::size_t N>
+double scalar_number(Mode mode, const std::array<std::uint64_t, N>& b) {
+  if (mode == Mode::scalar_uniform) return rng::draw<rng::Distribution::uniform>(b);
+  if (mode == Mode::scalar_gauss) return rng::draw<rng::Distribution::gauss>(b);
+  return rng::inverse_normal(rng::to_unit_mid(b[0]));
+}
 
 const char* mode_name(Mode m) {
   switch (m) {
@@ -53,6 +68,8 @@ const char* mode_name(Mode m) {
     case Mode::scalar_gauss: return "scalar-gauss";
     case Mode::uniform: return "batch-uniform";
     case Mode::gauss: return "batch-gauss";
+    case Mode::scalar_inverse: return "scalar-inverse";
+    case Mode::inverse: return "batch-inverse";
   }
   return "?";
 }
@@ -97,10 +114,8 @@ void scalar_hash(benchmark::State& state, const G& g, Mode mode) {
       const auto b = g.stream(1, i++);
       if (mode == Mode::scalar) {
         for (auto w : b) benchmark::DoNotOptimize(w);
-      } else if (mode == Mode::scalar_uniform) {
-        benchmark::DoNotOptimize(rng::draw<rng::Distribution::uniform>(b));
       } else {
-        benchmark::DoNotOptimize(rng::draw<rng::Distribution::gauss>(b));
+        benchmark::DoNotOptimize(scalar_number(mode, b));
       }
     }
   }
@@ -114,16 +129,14 @@ void scalar_stream(benchmark::State& state, Next next, Mode mode) {
       const std::array<std::uint64_t, 1> b{next()};
       if (mode == Mode::scalar)
         benchmark::DoNotOptimize(b[0]);
-      else if (mode == Mode::scalar_uniform)
-        benchmark::DoNotOptimize(rng::draw<rng::Distribution::uniform>(b));
       else
-        benchmark::DoNotOptimize(rng::draw<rng::Distribution::gauss>(b));
+        benchmark::DoNotOptimize(scalar_number(mode, b));
     }
   }
 }
 
 void run_case(benchmark::State& state, const Row& row, Mode mode, std::size_t buffer) {
-  const bool scalar = mode == Mode::scalar || mode == Mode::scalar_uniform || mode == Mode::scalar_gauss;
+  const bool scalar = is_scalar(mode);
   if (row.std64) {
     std::mt19937_64 eng(1);
     if (scalar) return scalar_stream(state, [&] { return eng(); }, mode);
@@ -147,6 +160,18 @@ void run_case(benchmark::State& state, const Row& row, Mode mode, std::size_t bu
     }
     return;
   }
+  if (mode == Mode::inverse) {
+    const std::size_t w = static_cast<std::size_t>(rng::words_per_call(row.spec));
+    std::vector<std::uint64_t> words(buffer * w);
+    std::vector<double> u(buffer), z(buffer);
+    for (auto _ : state) {
+      rng::fill_stream(row.spec, 1, 0, words);
+      for (std::size_t i = 0; i < buffer; ++i) u[i] = rng::to_unit_mid(words[i * w]);
+      rng::inverse_normal(u.data(), z.data(), buffer);
+      benchmark::ClobberMemory();
+    }
+    return;
+  }
   std::vector<double> out(buffer);
   const auto dist = mode == Mode::gauss ? rng::Distribution::gauss : rng::Distribution::uniform;
   for (auto _ : state) {
@@ -157,7 +182,7 @@ void run_case(benchmark::State& state, const Row& row, Mode mode, std::size_t bu
 
 std::size_t outputs_per_iteration(const Row& row, Mode mode, std::size_t buffer) {
   if (mode == Mode::scalar) return kScalarCalls * (row.std64 ? 1 : rng::words_per_call(row.spec));
-  if (mode == Mode::scalar_uniform || mode == Mode::scalar_gauss) return kScalarCalls;
+  if (is_scalar(mode)) return kScalarCalls;
   return buffer;
 }
 
@@ -319,12 +344,12 @@ void run_bench(const BenchArgs& a) {
   std::map<std::pair<std::size_t, Mode>, std::size_t> at;
   for (std::size_t c = 0; c < cases.size(); ++c) at[{cases[c].row, cases[c].mode}] = c;
   std::printf("dpdrng bench rng: median of %d repetitions, ns per 64-bit output (scalar, batch) or per number\n"
-              "(distributions); in brackets the ratio to mt19937 in the same mode and run; last column: batched gauss\n"
-              "over batched uniform.\n\n",
+              "(distributions); in brackets the ratio to mt19937 in the same mode and run; last columns: batched gauss\n"
+              "over batched uniform, and the inverse normal CDF over Box-Muller (gauss), scalar and batched.\n\n",
               a.repetitions);
   std::printf("%-16s", "generator");
   for (Mode m : kModes) std::printf(" %17s", mode_name(m));
-  std::printf(" %12s\n", "gauss/unif.");
+  std::printf(" %12s %12s %12s\n", "gauss/unif.", "inv/gauss sc", "inv/gauss b.");
   for (std::size_t r = 0; r < table.size(); ++r) {
     bool any = false;
     for (Mode m : kModes) any = any || at.count({r, m});
@@ -340,11 +365,17 @@ void run_bench(const BenchArgs& a) {
       std::snprintf(cell, sizeof cell, "%.3f (%.2fx)", med[it->second], ratio(it->second));
       std::printf(" %17s", cell);
     }
-    const auto g = at.find({r, Mode::gauss}), u = at.find({r, Mode::uniform});
-    if (g != at.end() && u != at.end() && med[u->second] > 0)
-      std::printf(" %11.2fx\n", med[g->second] / med[u->second]);
-    else
-      std::printf(" %12s\n", "-");
+    auto quotient = [&](Mode top, Mode bottom) {
+      const auto t = at.find({r, top}), b = at.find({r, bottom});
+      if (t != at.end() && b != at.end() && med[b->second] > 0)
+        std::printf(" %11.2fx", med[t->second] / med[b->second]);
+      else
+        std::printf(" %12s", "-");
+    };
+    quotient(Mode::gauss, Mode::uniform);
+    quotient(Mode::scalar_inverse, Mode::scalar_gauss);
+    quotient(Mode::inverse, Mode::gauss);
+    std::printf("\n");
   }
   const nlohmann::json ctx = run_context(collector, a);
   std::printf("\n%s, %s, %s, %s, dpdrng %s, %d CPUs at %.0f MHz%s\n", ctx["host"].get<std::string>().c_str(),
@@ -363,7 +394,9 @@ const bool registered = register_command(40, [](CLI::App& root) {
       "Modes: scalar = independent counter-mode calls one at a time, each output forced into a register, so\n"
       "the CPU may overlap calls but the compiler cannot vectorise them; batch = fill_stream() into a buffer\n"
       "(SIMD kernels for tea32, tea64, philox4x32, threefry2x64, splitmix64); scalar-/batch- uniform and gauss =\n"
-      "one number per call (draw<> and fill_noise()). Times are process CPU time (time lent to other processes\n"
+      "one number per call (draw<> and fill_noise()); scalar-/batch- inverse = one Gaussian number per call from\n"
+      "the block's first word through the inverse normal CDF (scalar, and fill_stream() then the batched kernel).\n"
+      "Times are process CPU time (time lent to other processes\n"
       "does not count), medians over repetitions; on a shared machine compare ratios, not absolute times.");
   sub->add_flag("--json", args->json, "machine-readable output with run context and every repetition");
   add_real(*sub, "--min-time", args->min_time, "minimum seconds per repetition of each benchmark",

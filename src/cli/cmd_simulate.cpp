@@ -5,6 +5,7 @@
 #include <sstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "dpdrng/cli/options.hpp"
 #include "dpdrng/cli/checked.hpp"
@@ -12,7 +13,7 @@
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/common/output.hpp"
 #include "dpdrng/dpd/water.hpp"
-#include "dpdrng/stats/power_sums.hpp"
+#include "dpdrng/stats/moments.hpp"
 #include "bilayer_cli.hpp"
 #include "csv_out.hpp"
 
@@ -38,36 +39,39 @@ void write_series(const std::filesystem::path& dir, const dpd::RunResult& r) {
   write_csv(dir / "rdf.csv", {"r", "g"}, {&r.rdf.r, &r.rdf.g});
 }
 
-stats::Moments zeta_moments(const dpd::ZetaSums& z) {
-  return stats::moments(stats::PowerSums{z.n, z.s1, z.s2, z.s3, z.s4});
+// Moments of the run's ζ (nullopt when none was drawn or too few for intervals).
+std::optional<stats::MomentsResult> zeta_moments(const dpd::ZetaSums& z) {
+  if (z.n < 4) return std::nullopt;
+  return stats::moments_of(stats::MomentSums::from_powers(z.n, z.s1, z.s2, z.s3, z.s4));
 }
 
-// The ζ of every production step's pairs inside r_c (none drawn: n = 0, the rest null).
+// The ζ of every production step's pairs inside r_c (fewer than 4 drawn: n, the rest null).
 nlohmann::json zeta_json(const dpd::ZetaSums& z) {
-  const stats::Moments m = zeta_moments(z);
-  nlohmann::json j = {{"n", m.n}};
-  if (m.variance > 0)
-    j.update({{"mean", m.mean},
-              {"mean_se", m.mean_se},
-              {"variance", m.variance},
-              {"variance_ci", {m.variance_ci.lo, m.variance_ci.hi}},
-              {"second_moment", m.second_moment},
-              {"second_moment_ci", {m.second_moment_ci.lo, m.second_moment_ci.hi}},
-              {"second_moment_p", m.second_moment_p},
-              {"skewness", m.skewness},
-              {"kurtosis", m.kurtosis},
-              {"confidence", 0.95}});
+  nlohmann::json j = {{"n", z.n}};
+  const auto m = zeta_moments(z);
+  if (m)
+    j.update({{"mean", m->mean},
+              {"mean_ci", {m->mean_ci.low, m->mean_ci.high}},
+              {"variance", m->variance},
+              {"variance_ci", {m->variance_ci.low, m->variance_ci.high}},
+              {"second_moment", m->second_moment},
+              {"second_moment_ci", {m->second_moment_ci.low, m->second_moment_ci.high}},
+              {"second_moment_p", m->second_moment_p},
+              {"skewness", m->skewness},
+              {"excess_kurtosis", m->kurtosis},
+              {"kurtosis", m->kurtosis + 3.0},
+              {"confidence", m->confidence}});
   else
     for (const char* k : {"mean", "variance", "variance_ci", "skewness", "kurtosis"}) j[k] = nullptr;
   return j;
 }
 
 std::string zeta_line(const dpd::RunResult& r) {
-  const stats::Moments m = zeta_moments(r.zeta);
-  if (dpd::blew_up(r.status) || !(m.variance > 0)) return "n/a";
+  const auto m = zeta_moments(r.zeta);
+  if (dpd::blew_up(r.status) || !m) return "n/a";
   std::ostringstream o;
-  o << "variance " << std::setprecision(5) << m.variance << " [" << m.variance_ci.lo << ", " << m.variance_ci.hi
-    << "] (95 %), kurtosis " << std::setprecision(4) << m.kurtosis << ", n " << m.n;
+  o << "variance " << std::setprecision(5) << m->variance << " [" << m->variance_ci.low << ", "
+    << m->variance_ci.high << "] (95 %), kurtosis " << std::setprecision(4) << m->kurtosis + 3.0 << ", n " << m->n;
   return o.str();
 }
 

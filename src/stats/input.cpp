@@ -112,7 +112,13 @@ void check_input_path(const std::string& path) {
   if (std::filesystem::is_directory(st)) throw InputError("'" + path + "' is a directory, not an input file");
 }
 
-std::vector<double> read_values(const std::string& path, InputFormat format) {
+namespace {
+struct Bytes {
+  std::vector<char> data;
+  std::string source;
+};
+
+Bytes read_all(const std::string& path) {
   check_input_path(path);
   const bool from_stdin = path == "-";
   const std::string source = from_stdin ? "standard input" : path;
@@ -128,7 +134,20 @@ std::vector<double> read_values(const std::string& path, InputFormat format) {
     if (got < chunk.size()) break;
   }
   if (std::ferror(in)) throw InputError("cannot read " + source);
-  return decode_values(bytes, format, source);
+  return {std::move(bytes), source};
+}
+}  // namespace
+
+std::vector<double> read_values(const std::string& path, InputFormat format) {
+  const Bytes b = read_all(path);
+  return decode_values(b.data, format, b.source);
+}
+
+std::vector<std::uint64_t> read_words(const std::string& path) {
+  const Bytes b = read_all(path);
+  auto words = words_of<std::uint64_t>(b.data, b.source);
+  if (words.empty()) throw InputError(b.source + ": no values");
+  return words;
 }
 
 }  // namespace dpdrng::stats

@@ -179,14 +179,14 @@ void measure(VariantReport& v, double alpha) {
   v.ns_per_number = stats::mean(values_of(v.cells, "cost.ns_per_number"));
   v.step_ms = stats::mean(values_of(v.cells, "cost.step_seconds")) * 1e3;
   v.rng_share = stats::mean(values_of(v.cells, "cost.rng_share"));
-  stats::PowerSums z;
+  std::size_t n = 0;
+  double s[4] = {0, 0, 0, 0};
   for (const auto* c : v.cells) {
     if (!c->has("zeta_n")) continue;
-    z.n += static_cast<std::uint64_t>(c->scalar("zeta_n", 0));
-    z.s1 += c->scalar("zeta_s1", 0), z.s2 += c->scalar("zeta_s2", 0);
-    z.s3 += c->scalar("zeta_s3", 0), z.s4 += c->scalar("zeta_s4", 0);
+    n += static_cast<std::size_t>(c->scalar("zeta_n", 0));
+    for (int k = 0; k < 4; ++k) s[k] += c->scalar("zeta_s" + std::to_string(k + 1), 0);
   }
-  v.zeta = stats::moments(z, 1.0, alpha);
+  if (n >= 4) v.zeta = stats::moments_of(stats::MomentSums::from_powers(n, s[0], s[1], s[2], s[3]));
 }
 
 // The ⟨ζ²⟩ = 1 tests of every variant with ζ, Holm-corrected together; and each variant's predicted shift.
@@ -194,7 +194,8 @@ void decide_zeta(Analysis& a) {
   std::vector<double> p;
   std::vector<VariantReport*> tested;
   for (auto& v : a.variants)
-    if (v.zeta.verdict != stats::Verdict::not_applicable) p.push_back(v.zeta.second_moment_p), tested.push_back(&v);
+    if (v.zeta.n >= 4 && std::isfinite(v.zeta.second_moment_p))
+      p.push_back(v.zeta.second_moment_p), tested.push_back(&v);
   const std::vector<double> adj = stats::holm_adjust(p);
   for (std::size_t k = 0; k < tested.size(); ++k) {
     Decision& d = tested[k]->zeta_decision;

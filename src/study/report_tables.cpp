@@ -251,7 +251,7 @@ std::string measured_shift(const VariantReport& v) {
   return s;
 }
 
-std::string interval(double lo, double hi) { return "[" + fmt("%.4f", lo) + ", " + fmt("%.4f", hi) + "]"; }
+std::string interval(const stats::Interval& i) { return "[" + fmt("%.4f", i.low) + ", " + fmt("%.4f", i.high) + "]"; }
 
 // The variant's flag for a group of pass fractions: "flag" when any of its streams differs.
 std::string pass_flag(const VariantReport& v, const std::string& test) {
@@ -285,14 +285,14 @@ std::string physics_flags(const VariantReport& v) {
 
 std::string zeta_markdown(const Analysis& a) {
   std::ostringstream o;
-  o << "| generator | noise | seeding | replicas | ζ draws | ⟨ζ²⟩ [95 % CI] | kurtosis | ⟨ζ²⟩ = 1: corrected p | "
+  o << "| generator | noise | seeding | replicas | ζ draws | ⟨ζ²⟩ [95 % CI] | excess kurtosis | ⟨ζ²⟩ = 1: corrected p | "
        "T shift predicted by ⟨ζ²⟩ | T shift measured vs MT (95 %) |\n|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& v : a.variants) {
     if (v.zeta.n == 0) continue;
     const std::string b = v.zeta_decision.differs ? "**" : "";
     o << "| " << v.key.label() << " | " << v.key.distribution << " | " << (v.key.reference ? "stream" : v.key.seeding)
       << " | " << v.cells.size() << " | " << fmt("%.3g", double(v.zeta.n)) << " | " << b
-      << fmt("%.4f", v.zeta.second_moment) << b << " " << interval(v.zeta.second_moment_ci.lo, v.zeta.second_moment_ci.hi)
+      << fmt("%.4f", v.zeta.second_moment) << b << " " << interval(v.zeta.second_moment_ci)
       << " | " << fmt("%.3f", v.zeta.kurtosis) << " | " << adjusted(v.zeta_decision) << " | "
       << (v.key.reference ? "(reference)" : fmt("%+.2f %%", 100 * v.zeta_predicted_shift)) << " | "
       << (v.key.reference ? "(reference)" : measured_shift(v)) << " |\n";
@@ -303,7 +303,7 @@ std::string zeta_markdown(const Analysis& a) {
 std::string zeta_csv(const Analysis& a) {
   std::ostringstream o;
   o << "generator,rounds,distribution,feed,seeding,dt,replicas,zeta_n,zeta_mean,zeta_variance,variance_ci_low,"
-       "variance_ci_high,second_moment,second_moment_ci_low,second_moment_ci_high,skewness,kurtosis,p,p_adjusted,"
+       "variance_ci_high,second_moment,second_moment_ci_low,second_moment_ci_high,skewness,excess_kurtosis,p,p_adjusted,"
        "predicted_T_shift,measured_T_shift,measured_T_shift_sigma\n";
   for (const auto& v : a.variants) {
     if (v.zeta.n == 0) continue;
@@ -311,9 +311,9 @@ std::string zeta_csv(const Analysis& a) {
     const double shift = t && t->ref != 0 ? (t->value - t->ref) / t->ref : NAN;
     o << v.key.generator << ',' << v.key.rounds << ',' << v.key.distribution << ',' << v.key.feed << ','
       << (v.key.reference ? "stream" : v.key.seeding) << ',' << num(v.key.dt) << ',' << v.cells.size() << ','
-      << v.zeta.n << ',' << num(v.zeta.mean) << ',' << num(v.zeta.variance) << ',' << num(v.zeta.variance_ci.lo)
-      << ',' << num(v.zeta.variance_ci.hi) << ',' << num(v.zeta.second_moment) << ','
-      << num(v.zeta.second_moment_ci.lo) << ',' << num(v.zeta.second_moment_ci.hi) << ',' << num(v.zeta.skewness)
+      << v.zeta.n << ',' << num(v.zeta.mean) << ',' << num(v.zeta.variance) << ',' << num(v.zeta.variance_ci.low)
+      << ',' << num(v.zeta.variance_ci.high) << ',' << num(v.zeta.second_moment) << ','
+      << num(v.zeta.second_moment_ci.low) << ',' << num(v.zeta.second_moment_ci.high) << ',' << num(v.zeta.skewness)
       << ',' << num(v.zeta.kurtosis) << ',' << num(v.zeta_decision.p) << ',' << num(v.zeta_decision.p_adjusted)
       << ',' << num(v.zeta_predicted_shift) << ',' << num(shift) << ',' << num(t ? t->sigma : NAN) << '\n';
   }

@@ -1,5 +1,6 @@
 #pragma once
 // Reading the numbers the χ², t and correlation tests consume: a file or standard input, in one of three formats.
+#include <cstdint>
 #include <span>
 #include <string>
 #include <string_view>
@@ -22,6 +23,10 @@ std::vector<double> decode_values(std::span<const char> bytes, InputFormat forma
 
 // Reads `path` ("-" = standard input) completely and decodes it. Throws InputError when it cannot be opened.
 std::vector<double> read_values(const std::string& path, InputFormat format);
+
+// Reads `path` ("-" = standard input) as raw little-endian 64-bit words, unmapped (the 2-D χ² takes their
+// 32-bit halves). Throws InputError as read_values does.
+std::vector<std::uint64_t> read_words(const std::string& path);
 
 // Throws InputError when `path` (not "-") names nothing, a directory or something unreadable, so that every
 // input reader says why in the same words.

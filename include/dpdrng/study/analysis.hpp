@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "dpdrng/stats/mean_tests.hpp"
-#include "dpdrng/stats/power_sums.hpp"
+#include "dpdrng/stats/moments.hpp"
 #include "dpdrng/study/cell_result.hpp"
 #include "dpdrng/study/config.hpp"
 
@@ -105,8 +105,8 @@ struct VariantReport {
   std::string nist_report;               // the battery's own finalAnalysisReport text, when stored
   double nist_sequences = 0, nist_failed = NAN, nist_columns = 0;
   double ns_per_number = NAN, step_ms = NAN, rng_share = NAN;
-  // ζ of the production steps' pairs inside r_c, the replicas' power sums added (n = 0: none stored).
-  stats::Moments zeta;
+  // ζ of the production steps' pairs inside r_c, the replicas' power sums added (n = 0: fewer than 4 stored).
+  stats::MomentsResult zeta;
   Decision zeta_decision;  // ⟨ζ²⟩ = 1, Holm over every variant with ζ (a family apart from the verdicts')
   // ⟨ζ²⟩ / ⟨ζ²⟩_reference − 1: the shift of k_BT that fluctuation–dissipation predicts (T ∝ σ²⟨ζ²⟩).
   double zeta_predicted_shift = NAN;
