@@ -27,7 +27,7 @@ struct BenchDpdArgs {
   std::string generators = "tea32,tea64,philox4x32,threefry2x64,splitmix64,mt19937";
   std::string rounds = "1,8,32";
   std::string pairs = "all,cells";
-  std::string distribution = "gauss";
+  std::string distribution = "gauss", feed = "halves";
   std::int64_t steps_all = 2000, steps_cells = 100;
   int particles_cells = 24000;
   int threads = 1;
@@ -71,6 +71,8 @@ dpd::WaterConfig scene(const BenchDpdArgs& a, dpd::PairMode mode, std::int64_t s
   c.observables = false;
   c.threads = a.threads;
   c.distribution = rng::parse_distribution(a.distribution);
+  c.feed = rng::parse_feed(a.feed);
+  rng::check_feed(c.distribution, c.feed);
   return c;
 }
 
@@ -214,6 +216,7 @@ Paper measure_paper(const BenchDpdArgs& a) {
   p.steps = a.paper ? 10000 : a.steps_all;
   dpd::WaterConfig pc = scene(a, dpd::PairMode::all, p.steps);
   pc.distribution = rng::Distribution::gauss;
+  pc.feed = rng::parse_feed(a.feed);
   progress("bench dpd: paper setting");
   p.t8 = measure(with_generator(pc, "tea32", 8), a.repeat);
   p.t1 = measure(with_generator(pc, "tea32", 1), a.repeat);
@@ -223,7 +226,7 @@ Paper measure_paper(const BenchDpdArgs& a) {
 
 void print_table(const BenchDpdArgs& a, const std::vector<Measured>& table) {
   std::cout << "particle-steps/s (median of " << a.repeat << ", " << a.threads << " thread(s), " << a.distribution
-            << ")\nRNG share by difference: 'vs none' against the table's zeta = 0 run, 'in-run' against zeta = 0\n"
+            << ", feed " << a.feed << ")\nRNG share by difference: 'vs none' against the table's zeta = 0 run, 'in-run' against zeta = 0\n"
             << "force evaluations alternated with the run's own on its final state (timings.rng_share_estimate)\n";
   std::cout << std::left << std::setw(7) << "pairs" << std::setw(9) << "beads" << std::setw(20) << "noise"
             << std::right << std::setw(14) << "p-steps/s" << std::setw(12) << "vs none" << std::setw(12)
@@ -276,11 +279,12 @@ void run_bench_dpd(const BenchDpdArgs& a) {
       throw InputError("--rounds: " + std::to_string(r) + " is outside tea32/tea64's " +
                        std::to_string(tea.min_rounds) + ".." + std::to_string(tea.max_rounds));
   for (const auto& p : split(a.pairs)) dpd::parse_pair_mode(p);
+  rng::check_feed(rng::parse_distribution(a.distribution), rng::parse_feed(a.feed));
   for (const auto& g : split(a.generators)) rng::find_generator(g);  // InputError for unknown names
 
   nlohmann::json out;
   out["context"] = {{"version", DPDRNG_VERSION}, {"threads", a.threads}, {"repeat", a.repeat},
-                    {"distribution", a.distribution}, {"statistic", "median wall time of the production steps (after a short untimed start)"}};
+                    {"distribution", a.distribution}, {"feed", a.feed}, {"statistic", "median wall time of the production steps (after a short untimed start)"}};
   const std::vector<Measured> table = a.scaling_only ? std::vector<Measured>{} : measure_table(a);
   const Paper paper = a.scaling_only ? Paper{} : measure_paper(a);
   std::optional<Scaling> scaling;
@@ -322,6 +326,8 @@ const bool registered = register_command(62, [](CLI::App& root) {
   sub->add_option("--rounds", a->rounds, "round counts for tea32/tea64")->capture_default_str();
   sub->add_option("--pairs", a->pairs, "all, cells or all,cells")->capture_default_str();
   sub->add_option("--distribution", a->distribution, "gauss or uniform")->capture_default_str();
+  sub->add_option("--feed", a->feed, "uniforms feeding the Gaussian: halves, blocks or inverse (simulate --help)")
+      ->capture_default_str();
   add_integer(*sub, "--steps-all", a->steps_all, "steps of the 256-bead all-pairs runs", {1, kIntMax});
   add_integer(*sub, "--steps-cells", a->steps_cells, "steps of the cells-mode runs", {1, kIntMax});
   add_integer(*sub, "--particles-cells", a->particles_cells, "beads of the cells-mode system", {2, 50'000'000});

@@ -40,7 +40,7 @@ void print_human(const dpd::BilayerResult& r) {
   };
   std::cout << "scene bilayer: " << r.lipids << " H3(T6)2 lipids, " << r.particles << " beads, box " << r.box[0]
             << " x " << r.box[1] << " x " << r.box[2] << ", pairs " << r.pairs << ", " << r.generator << " / "
-            << r.seeding << " / " << r.distribution << "\n"
+            << r.seeding << " / " << r.distribution << " / feed " << r.feed << "\n"
             << "status                 " << r.status << " (" << r.steps_done << " steps)\n"
             << "temperature k_BT       " << pm(r.temperature) << "\n"
             << "pressure xx, yy, zz    " << pm(r.pressure_diag[0]) << ", " << pm(r.pressure_diag[1]) << ", "

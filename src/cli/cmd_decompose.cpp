@@ -18,7 +18,7 @@ struct DecomposeArgs {
   std::string scene = "water";
   std::string domains = "2";
   std::string seeding = "distance";
-  std::string distribution = "gauss";
+  std::string distribution = "gauss", feed = "halves";
   GeneratorOptions gen;
   dpd::DecompConfig cfg;
   bool no_reference = false, json = false, quiet = false;
@@ -51,7 +51,7 @@ void print_run(const char* title, const dpd::DecompRun& r) {
 
 void print_human(const dpd::DecompResult& r) {
   std::cout << "decomposition check: water, " << r.particles << " beads, box " << r.box_length << ", domains "
-            << r.domains << ", " << r.generator << " / " << r.seeding << " / " << r.distribution << "\n";
+            << r.domains << ", " << r.generator << " / " << r.seeding << " / " << r.distribution << " / feed " << r.feed << "\n";
   print_boundary("first force evaluation (initial configuration)", r.snapshot);
   print_boundary("whole decomposed run", r.decomposed.boundary);
   print_run("decomposed run", r.decomposed);
@@ -95,6 +95,7 @@ void run_decompose(DecomposeArgs& a) {
   cfg.noise.generator = a.gen.spec();
   cfg.noise.seeding = dpd::parse_decomp_seeding(a.seeding);
   cfg.noise.distribution = rng::parse_distribution(a.distribution);
+  cfg.noise.feed = rng::parse_feed(a.feed);
   cfg.reference = !a.no_reference;
   const dpd::DecompResult r = dpd::run_decomposition(cfg);
   if (a.json)
@@ -121,6 +122,7 @@ const bool registered = register_command(45, [](CLI::App& root) {
   a->gen.add_to(*sub);
   sub->add_option("--seeding", a->seeding, "distance, pair-step, grid, grid:K, canonical")->capture_default_str();
   sub->add_option("--distribution", a->distribution, "gauss or uniform")->capture_default_str();
+  sub->add_option("--feed", a->feed, "uniforms feeding the Gaussian: halves, blocks or inverse")->capture_default_str();
   add_integer(*sub, "--particles,-n", c.water.particles, "number of beads", {2, 20000});
   add_real(*sub, "--density", c.water.density, "bead density rho");
   add_real(*sub, "--dt", c.water.dt, "time step");

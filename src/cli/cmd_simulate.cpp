@@ -2,8 +2,10 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <sstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "dpdrng/cli/options.hpp"
 #include "dpdrng/cli/checked.hpp"
@@ -11,6 +13,7 @@
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/common/output.hpp"
 #include "dpdrng/dpd/water.hpp"
+#include "dpdrng/stats/moments.hpp"
 #include "bilayer_cli.hpp"
 #include "csv_out.hpp"
 
@@ -36,6 +39,42 @@ void write_series(const std::filesystem::path& dir, const dpd::RunResult& r) {
   write_csv(dir / "rdf.csv", {"r", "g"}, {&r.rdf.r, &r.rdf.g});
 }
 
+// Moments of the run's ζ (nullopt when none was drawn or too few for intervals).
+std::optional<stats::MomentsResult> zeta_moments(const dpd::ZetaSums& z) {
+  if (z.n < 4) return std::nullopt;
+  return stats::moments_of(stats::MomentSums::from_powers(z.n, z.s1, z.s2, z.s3, z.s4));
+}
+
+// The ζ of every production step's pairs inside r_c (fewer than 4 drawn: n, the rest null).
+nlohmann::json zeta_json(const dpd::ZetaSums& z) {
+  nlohmann::json j = {{"n", z.n}};
+  const auto m = zeta_moments(z);
+  if (m)
+    j.update({{"mean", m->mean},
+              {"mean_ci", {m->mean_ci.low, m->mean_ci.high}},
+              {"variance", m->variance},
+              {"variance_ci", {m->variance_ci.low, m->variance_ci.high}},
+              {"second_moment", m->second_moment},
+              {"second_moment_ci", {m->second_moment_ci.low, m->second_moment_ci.high}},
+              {"second_moment_p", m->second_moment_p},
+              {"skewness", m->skewness},
+              {"excess_kurtosis", m->kurtosis},
+              {"kurtosis", m->kurtosis + 3.0},
+              {"confidence", m->confidence}});
+  else
+    for (const char* k : {"mean", "variance", "variance_ci", "skewness", "kurtosis"}) j[k] = nullptr;
+  return j;
+}
+
+std::string zeta_line(const dpd::RunResult& r) {
+  const auto m = zeta_moments(r.zeta);
+  if (dpd::blew_up(r.status) || !m) return "n/a";
+  std::ostringstream o;
+  o << "variance " << std::setprecision(5) << m->variance << " [" << m->variance_ci.low << ", "
+    << m->variance_ci.high << "] (95 %), kurtosis " << std::setprecision(4) << m->kurtosis + 3.0 << ", n " << m->n;
+  return o.str();
+}
+
 void print_human(const dpd::RunResult& r) {
   // A run that blew up has no observables: "n/a", never a number.
   const bool na = dpd::blew_up(r.status);
@@ -52,7 +91,7 @@ void print_human(const dpd::RunResult& r) {
     return na ? std::string("n/a") : o.str();
   };
   std::cout << "scene water: " << r.particles << " beads, box " << r.box_length << ", pairs " << r.pairs << ", "
-            << r.generator << " / " << r.seeding << " / " << r.distribution
+            << r.generator << " / " << r.seeding << " / " << r.distribution << " / feed " << r.feed
             << (r.integrator == "mvv" ? "" : ", integrator " + r.integrator) << "\n"
             << "status                 " << r.status << " (" << r.steps_done << " steps)\n"
             << "temperature k_BT       " << pm(r.temperature) << "\n"
@@ -65,6 +104,7 @@ void print_human(const dpd::RunResult& r) {
                          num(r.velocity_pdf.error_rate_measured_mean) + " (at measured T)")
             << "\n"
             << "momentum drift / bead  " << r.momentum_drift << "\n"
+            << "zeta (pairs in r_c)    " << zeta_line(r) << "\n"
             << "time                   " << r.timings.total_s << " s, " << r.timings.particle_steps_per_s
             << " particle-steps/s, " << r.timings.threads << " thread(s)\n"
             << "random numbers         " << r.timings.random_numbers << ", " << r.timings.ns_per_number
@@ -88,8 +128,11 @@ void run_simulate(SimulateArgs& a) {
     };
   const dpd::RunResult r = dpd::run_water(cfg, hooks);
   if (!a.run.series_dir.empty()) write_series(a.run.series_dir, r);
-  if (a.run.json)
-    std::cout << dpd::to_json(r, false).dump(2) << "\n";
+  if (a.run.json) {
+    nlohmann::json j = dpd::to_json(r, false);
+    j["zeta"] = dpd::blew_up(r.status) ? nlohmann::json(nullptr) : zeta_json(r.zeta);
+    std::cout << j.dump(2) << "\n";
+  }
   else
     print_human(r);
 }

@@ -31,6 +31,11 @@ void RunOptions::add_noise_and_output(CLI::App& app, const Help& help, std::uint
   app.add_option("--seeding", seeding, "distance (the paper) or pair-step")->capture_default_str();
   app.add_option("--distribution", distribution, "gauss (Box-Muller) or uniform (sqrt3(2u-1))")
       ->capture_default_str();
+  app.add_option("--feed", feed,
+                 "uniforms feeding the Gaussian: halves (Box-Muller on one block; a one-word block's two 32-bit\n"
+                 "halves), blocks (u1, u2 from two blocks of the pair, 53 bits each) or inverse (one 53-bit uniform\n"
+                 "through the inverse normal CDF); uniform noise takes halves only")
+      ->capture_default_str();
   add_integer(app, "--seed", seed, "noise seed (pair-step key, mt19937 seed)");
   add_integer(app, "--init-seed", init_seed, "seed of the initial configuration");
   add_threads(app, threads, "OpenMP threads (0 = default); results are identical for any count");

@@ -86,6 +86,8 @@ void BilayerConfig::validate() const {
     bad("equilibrate", std::to_string(equilibrate) + " (warmup <= equilibrate < steps)");
   rng::validated(generator);
   if (seeding == rng::Seeding::counter) bad("seeding", "'counter' makes streams; pair noise needs distance or pair-step");
+  if (distribution == rng::Distribution::uniform && feed != rng::Feed::halves)
+    bad("feed", std::string(rng::to_string(feed)) + " applies to Gaussian noise only (uniform takes feed halves)");
   if (threads < 0) bad("threads", "must not be negative");
   if (sample_every < 1) bad("sample_every", "at least 1");
   positive(profile_bin, "profile_bin");

@@ -29,6 +29,7 @@ WaterConfig pair_config(const BilayerConfig& c, std::uint64_t seed) {
   w.generator = c.generator;
   w.seeding = c.seeding;
   w.distribution = c.distribution;
+  w.feed = c.feed;
   w.seed = seed;
   w.threads = c.threads;
   return w;
@@ -84,6 +85,7 @@ BilayerResult run_bilayer(const BilayerConfig& in, const RunHooks& hooks) {
   r.generator = is_mt ? "mt19937" : rng::describe(cfg.generator);
   r.seeding = is_mt ? "stream" : std::string(rng::to_string(cfg.seeding));
   r.distribution = rng::to_string(cfg.distribution);
+  r.feed = rng::to_string(cfg.feed);
   r.pairs = to_string(cfg.pairs);
   r.particles = n;
   r.lipids = st.lipids;
@@ -97,7 +99,7 @@ BilayerResult run_bilayer(const BilayerConfig& in, const RunHooks& hooks) {
   auto make_force = [&](PairForces& pair) {
     return ForceFn([&, p = &pair](System& sys, VelocityView v) {
       const auto t0 = Clock::now();
-      ForceSums f = p->compute(sys, v, static_cast<std::uint64_t>(current), false, false, no_taps);
+      ForceSums f = p->compute(sys, v, static_cast<std::uint64_t>(current), false, false, false, no_taps);
       const auto t1 = Clock::now();
       last_bonded = bonded.add(sys, st.topology);
       for (int a = 0; a < 3; ++a) {

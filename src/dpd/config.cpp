@@ -85,6 +85,8 @@ void WaterConfig::validate() const {
                        std::to_string(particles) + " beads, more than 64 a bead: use pairs = all or a higher density");
   rng::validated(generator);  // names the generator and its round range in the error
   if (seeding == rng::Seeding::counter) bad("seeding", "'counter' makes streams; pair noise needs distance or pair-step");
+  if (distribution == rng::Distribution::uniform && feed != rng::Feed::halves)
+    bad("feed", std::string(rng::to_string(feed)) + " applies to Gaussian noise only (uniform takes feed halves)");
   if (threads < 0) bad("threads", "must not be negative");
   if (sample_every < 1) bad("sample_every", "at least 1");
   if (vpdf_bins < 1) bad("vpdf_bins", "at least 1");

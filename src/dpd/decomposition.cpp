@@ -49,7 +49,7 @@ template <class G, rng::Distribution D>
 class Decomposed final : public DecomposedForces {
  public:
   Decomposed(G gen, const DecompNoise& noise, const DpdKernel& k, const DomainGrid& g)
-      : gen_(gen), seed_(noise.seed), seeding_(noise.seeding), k_(k), g_(g) {}
+      : gen_(gen), seed_(noise.seed), seeding_(noise.seeding), feed_(noise.feed), k_(k), g_(g) {}
 
   int words_per_pair() const override { return G::kWords; }
 
@@ -175,7 +175,12 @@ class Decomposed final : public DecomposedForces {
     }
     return {};
   }
-  double zeta(const rng::PairInput& seen, const rng::PairInput& canon) const { return rng::draw<D>(block(seen, canon)); }
+  // Under the blocks feed both owners hash the second block from their own view, rotated (rng::second_input).
+  double zeta(const rng::PairInput& seen, const rng::PairInput& canon) const {
+    const Block a = block(seen, canon);
+    if (feed_ != rng::Feed::blocks) return rng::draw<D>(feed_, a, a);
+    return rng::draw<D>(feed_, a, block(rng::second_input(seen), rng::second_input(canon)));
+  }
 
   // r_ij = −d, F_ij = s·d: (r_ij)_α (F_ij)_α = −s d_α²; conservative part a w d_α² / r (as PairLoop).
   static void add_virial(ForceSums& sums, const PairForce& f, const PairView& v, double r2) {
@@ -188,6 +193,7 @@ class Decomposed final : public DecomposedForces {
   G gen_;
   std::uint64_t seed_;
   DecompSeeding seeding_;
+  rng::Feed feed_;
   DpdKernel k_;
   DomainGrid g_;
   std::vector<int> dom_;

@@ -72,6 +72,8 @@ std::string to_string(const DecompSeeding& s) {
 void DecompConfig::validate() const {
   WaterConfig w = water;
   w.generator = noise.generator;
+  w.distribution = noise.distribution;
+  w.feed = noise.feed;
   w.seeding = rng::Seeding::distance;
   w.taps = {};
   w.validate();

@@ -166,6 +166,7 @@ DecompResult run_decomposition(const DecompConfig& in) {
   out.generator = rng::describe(cfg.noise.generator);
   out.seeding = to_string(cfg.noise.seeding);
   out.distribution = std::string(rng::to_string(cfg.noise.distribution));
+  out.feed = std::string(rng::to_string(cfg.noise.feed));
   out.domains = to_string(cfg.domains);
   out.particles = static_cast<std::size_t>(cfg.water.particles);
   out.box_length = cfg.water.box_length();
@@ -223,7 +224,7 @@ nlohmann::json run_json(const DecompRun& r) {
 
 nlohmann::json to_json(const DecompResult& r) {
   nlohmann::json j = {{"generator", r.generator},     {"seeding", r.seeding},
-                      {"distribution", r.distribution}, {"domains", r.domains},
+                      {"distribution", r.distribution}, {"feed", r.feed}, {"domains", r.domains},
                       {"particles", r.particles},       {"box_length", r.box_length},
                       {"snapshot", to_json(r.snapshot)}, {"decomposed", run_json(r.decomposed)}};
   if (r.has_reference) {

@@ -26,8 +26,8 @@ std::unique_ptr<PairForces> loop(Noise noise, const WaterConfig& cfg, const DpdK
 template <rng::Distribution D>
 std::unique_ptr<PairForces> baseline_or_stream(const WaterConfig& cfg, const DpdKernel& kernel, std::size_t n) {
   if (cfg.noise_override == NoiseOverride::none) return loop(ZeroNoise{}, cfg, kernel, n);
-  if (cfg.noise_override == NoiseOverride::unhashed) return loop(UnhashedNoise<D>{}, cfg, kernel, n);
-  return loop(StreamNoise<D>(cfg.seed), cfg, kernel, n);
+  if (cfg.noise_override == NoiseOverride::unhashed) return loop(UnhashedNoise<D>{cfg.feed}, cfg, kernel, n);
+  return loop(StreamNoise<D>(cfg.seed, cfg.feed), cfg, kernel, n);
 }
 }  // namespace
 

@@ -13,7 +13,7 @@ template <class G>
 std::unique_ptr<PairForces> make_for_generator(const G& gen, const WaterConfig& cfg, const DpdKernel& kernel,
                                                std::size_t n) {
   auto build = [&]<rng::Seeding S, rng::Distribution D>() -> std::unique_ptr<PairForces> {
-    HashNoise<rng::PairNoise<G, S, D>> noise{{gen, cfg.seed}};
+    HashNoise<rng::PairNoise<G, S, D>> noise{{gen, cfg.seed, cfg.feed}};
     return std::make_unique<PairLoop<decltype(noise)>>(noise, kernel, cfg.pairs, cfg.threads, n,
                                                        cfg.taps.pairs);
   };

@@ -121,7 +121,7 @@ void put_arrays(nlohmann::json& j, const RunResult& r) {
 }  // namespace
 
 void null_observables(nlohmann::json& j, std::initializer_list<const char*> kept) {
-  static constexpr const char* kLabels[] = {"status", "steps_done", "generator", "seeding", "distribution", "pairs",
+  static constexpr const char* kLabels[] = {"status", "steps_done", "generator", "seeding", "distribution", "feed", "pairs",
                                             "particles", "timings", "momentum_drift_per_bead", "momentum_final",
                                             "series"};
   auto keep = [&](const std::string& k) {
@@ -133,6 +133,10 @@ void null_observables(nlohmann::json& j, std::initializer_list<const char*> kept
   };
   for (auto it = j.begin(); it != j.end(); ++it)
     if (!keep(it.key())) it.value() = nullptr;
+}
+
+nlohmann::json to_json(const ZetaSums& z) {
+  return {{"n", z.n}, {"s1", z.s1}, {"s2", z.s2}, {"s3", z.s3}, {"s4", z.s4}};
 }
 
 nlohmann::json to_json(const RunResult& r, bool arrays) {
@@ -161,6 +165,7 @@ nlohmann::json to_json(const RunResult& r, bool arrays) {
   j["momentum_final"] = r.momentum_final;
   j["velocity_pdf_error_rate_xyz"] = r.velocity_pdf.error_rate_kT;
   j["msd_fit"] = {{"from", r.msd.fit_from}, {"to", r.msd.fit_to}};
+  j["zeta_sums"] = to_json(r.zeta);
   j["timings"] = timings_json(r.timings);
   j["timings"]["production_s"] = r.timings.production_s;
   j["timings"]["production_particle_steps_per_s"] = r.timings.production_particle_steps_per_s;

@@ -29,9 +29,9 @@ double rng_share_by_difference(PairForces& pair, const WaterConfig& cfg, const D
   // Alternating the two keeps a change of machine load from landing on one side only.
   for (std::uint64_t k = 0; k < 64; ++k) {
     const auto t0 = Clock::now();
-    pair.compute(s, v, first_step + k, false, false, taps);
+    pair.compute(s, v, first_step + k, false, false, false, taps);
     const auto t1 = Clock::now();
-    zero->compute(s, v, first_step + k, false, false, taps);
+    zero->compute(s, v, first_step + k, false, false, false, taps);
     const auto t2 = Clock::now();
     real.push_back(std::chrono::duration<double>(t1 - t0).count());
     none.push_back(std::chrono::duration<double>(t2 - t1).count());

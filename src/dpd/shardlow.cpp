@@ -15,17 +15,22 @@ namespace {
 std::function<double(const rng::PairInput&)> make_zeta(const WaterConfig& cfg) {
   const bool gauss = cfg.distribution == rng::Distribution::gauss;
   if (cfg.generator.name == "mt19937") {
-    // A stream: the sweep's fixed pair order is the order of the draws.
+    // A stream: the sweep's fixed pair order is the order of the draws (the blocks feed takes two words a pair).
     auto mt = std::make_shared<rng::Mt19937>(cfg.seed);
-    return [mt, gauss](const rng::PairInput&) {
-      const std::array<std::uint64_t, 1> b{mt->next64()};
-      return gauss ? rng::box_muller(b) : rng::uniform_unit_variance(b);
+    const rng::Feed feed = cfg.feed;
+    return [mt, gauss, feed](const rng::PairInput&) {
+      const std::array<std::uint64_t, 1> a{mt->next64()};
+      if (!gauss) return rng::uniform_unit_variance(a);
+      const std::array<std::uint64_t, 1> b{feed == rng::Feed::blocks ? mt->next64() : a[0]};
+      return rng::draw<rng::Distribution::gauss>(feed, a, b);
     };
   }
-  return rng::with_pair_noise(cfg.generator, cfg.seeding, cfg.distribution, cfg.seed,
-                              [](auto noise) -> std::function<double(const rng::PairInput&)> {
-                                return [noise](const rng::PairInput& p) { return noise(p); };
-                              });
+  return rng::with_pair_noise(
+      cfg.generator, cfg.seeding, cfg.distribution, cfg.seed,
+      [](auto noise) -> std::function<double(const rng::PairInput&)> {
+        return [noise](const rng::PairInput& p) { return noise(p); };
+      },
+      cfg.feed);
 }
 
 // Cell index along one axis; positions are wrapped into [0, L), the clamps only guard rounding.
@@ -54,7 +59,9 @@ void ShardlowSweep::update_pair(System& s, std::uint32_t i, std::uint32_t j, dou
   const double ex = dx / r, ey = dy / r, ez = dz / r;
   const double w = 1.0 - r / rc_;
   const double half_a = 0.5 * gamma_ * w * w * dt_;
-  const double half_noise = 0.5 * sigma_ * w * std::sqrt(dt_) * zeta_(rng::PairInput{i, j, dx, dy, dz, step});
+  const double zeta = zeta_(rng::PairInput{i, j, dx, dy, dz, step});
+  zeta_sums_.add(zeta);
+  const double half_noise = 0.5 * sigma_ * w * std::sqrt(dt_) * zeta;
   double u = ex * (s.vx[j] - s.vx[i]) + ey * (s.vy[j] - s.vy[i]) + ez * (s.vz[j] - s.vz[i]);
   const double d1 = half_a * u - half_noise;
   u -= 2.0 * d1;
@@ -92,6 +99,7 @@ void ShardlowSweep::sweep(System& s, std::uint64_t step) {
   const std::size_t n = s.size();
   const double Lx = s.box.L[0], Ly = s.box.L[1], Lz = s.box.L[2];
   const double hx = 0.5 * Lx, hy = 0.5 * Ly, hz = 0.5 * Lz, rc2 = rc_ * rc_;
+  zeta_sums_ = ZetaSums{};
   auto visit = [&](std::uint32_t i, std::uint32_t j) {
     const double dx = min_image(s.x[j] - s.x[i], Lx, hx), dy = min_image(s.y[j] - s.y[i], Ly, hy),
                  dz = min_image(s.z[j] - s.z[i], Lz, hz);
@@ -126,6 +134,7 @@ ForceSums ShardlowS1::start(System& s, const ForceFn& force) {
 
 ForceSums ShardlowS1::step(System& s, const ForceFn& force) {
   sweep_.sweep(s, ++step_);
+  const ZetaSums drawn = sweep_.zeta_sums();
   const std::size_t n = s.size();
   const double dt = dt_, half = 0.5 * dt_;
   double *x = s.x.data(), *y = s.y.data(), *z = s.z.data();
@@ -140,7 +149,9 @@ ForceSums ShardlowS1::step(System& s, const ForceFn& force) {
   const ForceSums sums = force(s, VelocityView{vx, vy, vz});
 #pragma omp parallel for num_threads(threads_) schedule(static)
   for (std::size_t i = 0; i < n; ++i) vx[i] += half * fx[i], vy[i] += half * fy[i], vz[i] += half * fz[i];
-  return sums;
+  ForceSums out = sums;
+  out.zeta = drawn;
+  return out;
 }
 
 WaterIntegrator::WaterIntegrator(const WaterConfig& cfg) : mvv_(cfg.dt, cfg.lambda, cfg.threads) {

@@ -63,6 +63,7 @@ RunResult run_water(const WaterConfig& in, const RunHooks& hooks) {
   if (cfg.noise_override == NoiseOverride::unhashed) r.generator = "unhashed";
   r.seeding = cfg.generator.name == "mt19937" ? "stream" : std::string(rng::to_string(cfg.seeding));
   r.distribution = rng::to_string(cfg.distribution);
+  r.feed = rng::to_string(cfg.feed);
   r.pairs = to_string(cfg.pairs);
   r.integrator = to_string(cfg.integrator);
   r.particles = n;
@@ -73,13 +74,17 @@ RunResult run_water(const WaterConfig& in, const RunHooks& hooks) {
   raw_steps.erase(std::unique(raw_steps.begin(), raw_steps.end()), raw_steps.end());
 
   std::int64_t current = 0;
+  // The ζ moments ride with the observables (a benchmark turns both off and pays for neither).
+  const bool tap_zeta = cfg.observables && cfg.noise_override == NoiseOverride::off;
   double force_s = 0;
   std::uint64_t numbers = 0, zetas = 0;
   const ForceFn force = [&](System& sys, VelocityView v) {
     const auto t0 = Clock::now();
     const bool tap_raw = std::binary_search(raw_steps.begin(), raw_steps.end(), current);
-    const bool tap_series = !cfg.taps.pairs.empty() && current > cfg.equilibrate;
-    const ForceSums f = pair->compute(sys, v, static_cast<std::uint64_t>(current), tap_raw, tap_series, r.taps);
+    const bool production = current > cfg.equilibrate;
+    const bool tap_series = !cfg.taps.pairs.empty() && production;
+    const ForceSums f =
+        pair->compute(sys, v, static_cast<std::uint64_t>(current), tap_raw, tap_series, tap_zeta && production, r.taps);
     force_s += seconds(t0, Clock::now());
     numbers += f.numbers;
     zetas += cfg.noise_override == NoiseOverride::none ? 0 : f.in_range;
@@ -132,6 +137,7 @@ RunResult run_water(const WaterConfig& in, const RunHooks& hooks) {
       break;
     }
     if (step > cfg.equilibrate) {
+      if (tap_zeta) r.zeta.merge(f.zeta);  // mvv: the pair loop's ζ; shardlow: the sweep's
       smp.T.push_back(T), smp.P.push_back(P), smp.Pc.push_back(Pc);
       for (int a = 0; a < 3; ++a) smp.Pd[a].push_back(Pd[a]), smp.Pcd[a].push_back(Pcd[a]);
       const std::int64_t k = step - cfg.equilibrate - 1;  // 0 at the first production step

@@ -92,4 +92,25 @@ Distribution parse_distribution(std::string_view name) {
 
 std::string_view to_string(Distribution d) { return d == Distribution::gauss ? "gauss" : "uniform"; }
 
+Feed parse_feed(std::string_view name) {
+  for (Feed f : kFeeds)
+    if (name == to_string(f)) return f;
+  throw InputError("unknown feed '" + std::string(name) + "' (known: halves, blocks, inverse)");
+}
+
+std::string_view to_string(Feed f) {
+  switch (f) {
+    case Feed::halves: return "halves";
+    case Feed::blocks: return "blocks";
+    case Feed::inverse: return "inverse";
+  }
+  return "?";
+}
+
+void check_feed(Distribution d, Feed f) {
+  if (d == Distribution::uniform && f != Feed::halves)
+    throw InputError("feed '" + std::string(to_string(f)) +
+                     "' applies to Gaussian noise only (uniform noise takes one word per number: feed halves)");
+}
+
 }  // namespace dpdrng::rng

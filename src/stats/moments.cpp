@@ -2,6 +2,7 @@
 
 #include <gsl/gsl_cdf.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -33,6 +34,19 @@ void MomentSums::merge(const MomentSums& o) {
   m3 = m3n;
   m4 = m4n;
   n += o.n;
+}
+
+MomentSums MomentSums::from_powers(std::size_t n, double s1, double s2, double s3, double s4) {
+  MomentSums s;
+  s.n = n;
+  if (n == 0) return s;
+  const double mu = s1 / static_cast<double>(n), nd = static_cast<double>(n);
+  s.mean = mu;
+  // Σ(x − μ)^k expanded with Σx = nμ (Kendall & Stuart, The Advanced Theory of Statistics, vol. 1, §3.7).
+  s.m2 = std::max(0.0, s2 - nd * mu * mu);
+  s.m3 = s3 - 3 * mu * s2 + 2 * nd * mu * mu * mu;
+  s.m4 = std::max(0.0, s4 - 4 * mu * s3 + 6 * mu * mu * s2 - 3 * nd * mu * mu * mu * mu);
+  return s;
 }
 
 namespace {

@@ -179,6 +179,33 @@ void measure(VariantReport& v, double alpha) {
   v.ns_per_number = stats::mean(values_of(v.cells, "cost.ns_per_number"));
   v.step_ms = stats::mean(values_of(v.cells, "cost.step_seconds")) * 1e3;
   v.rng_share = stats::mean(values_of(v.cells, "cost.rng_share"));
+  std::size_t n = 0;
+  double s[4] = {0, 0, 0, 0};
+  for (const auto* c : v.cells) {
+    if (!c->has("zeta_n")) continue;
+    n += static_cast<std::size_t>(c->scalar("zeta_n", 0));
+    for (int k = 0; k < 4; ++k) s[k] += c->scalar("zeta_s" + std::to_string(k + 1), 0);
+  }
+  if (n >= 4) v.zeta = stats::moments_of(stats::MomentSums::from_powers(n, s[0], s[1], s[2], s[3]));
+}
+
+// The ⟨ζ²⟩ = 1 tests of every variant with ζ, Holm-corrected together; and each variant's predicted shift.
+void decide_zeta(Analysis& a) {
+  std::vector<double> p;
+  std::vector<VariantReport*> tested;
+  for (auto& v : a.variants)
+    if (v.zeta.n >= 4 && std::isfinite(v.zeta.second_moment_p))
+      p.push_back(v.zeta.second_moment_p), tested.push_back(&v);
+  const std::vector<double> adj = stats::holm_adjust(p);
+  for (std::size_t k = 0; k < tested.size(); ++k) {
+    Decision& d = tested[k]->zeta_decision;
+    d.p = p[k], d.p_adjusted = adj[k], d.differs = adj[k] < a.alpha;
+  }
+  for (auto& v : a.variants) {
+    const VariantReport* ref = a.reference_for(v.key);
+    if (ref && ref->zeta.second_moment > 0 && v.zeta.second_moment > 0)
+      v.zeta_predicted_shift = v.zeta.second_moment / ref->zeta.second_moment - 1;
+  }
 }
 
 }  // namespace
@@ -188,7 +215,9 @@ std::string VariantKey::label() const {
   return rng::describe(rng::GeneratorSpec{generator, rounds, rng::kPaperTeaKey});
 }
 
-VariantKey variant_of(const Cell& c) { return {c.generator, c.rounds, c.distribution, c.seeding, c.dt, c.reference}; }
+VariantKey variant_of(const Cell& c) {
+  return {c.generator, c.rounds, c.noise(), c.seeding, c.dt, c.reference, c.feed};
+}
 
 double curve_error(const std::vector<double>& curve, const std::vector<double>& ref, double threshold) {
   if (curve.size() != ref.size()) return NAN;
@@ -293,6 +322,7 @@ Analysis analyse(const StudyConfig& config, const std::vector<CellResult>& cells
     a.families = study.empty() ? 0 : 1;
   }
   for (std::size_t k = 0; k < a.variants.size(); ++k) set_verdict(a.variants[k], tests[k]);
+  decide_zeta(a);
   return a;
 }
 

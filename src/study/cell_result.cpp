@@ -45,6 +45,7 @@ void write_cell(hid_t g, const CellResult& r) {
   h5::write_attribute(g, "cell.generator", c.generator);
   h5::write_attribute(g, "cell.rounds", std::int64_t{c.rounds});
   h5::write_attribute(g, "cell.distribution", c.distribution);
+  h5::write_attribute(g, "cell.feed", c.feed);
   h5::write_attribute(g, "cell.seeding", c.seeding);
   h5::write_attribute(g, "cell.dt", c.dt);
   h5::write_attribute(g, "cell.replica", std::int64_t{c.replica});
@@ -76,6 +77,7 @@ CellResult read_cell(hid_t g) {
   c.generator = get<std::string>(a, "cell.generator");
   c.rounds = static_cast<int>(get<std::int64_t>(a, "cell.rounds"));
   c.distribution = get<std::string>(a, "cell.distribution");
+  if (a.count("cell.feed")) c.feed = get<std::string>(a, "cell.feed");  // absent in stores older than the feed
   c.seeding = get<std::string>(a, "cell.seeding");
   c.dt = get<double>(a, "cell.dt");
   c.replica = static_cast<int>(get<std::int64_t>(a, "cell.replica"));

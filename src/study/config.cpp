@@ -155,6 +155,17 @@ std::vector<std::string> valid_distributions(Section& s, const std::string& key,
   return v;
 }
 
+std::vector<std::string> valid_feeds(Section& s, const std::string& key, std::vector<std::string> v) {
+  if (v.empty()) s.fail(key, "needs at least one feed");
+  for (const auto& f : v) try {
+      rng::parse_feed(f);
+    } catch (const InputError& e) {
+      s.fail(key, e.what());
+    }
+  check_unique(s, key, v);
+  return v;
+}
+
 std::vector<std::string> valid_seedings(Section& s, const std::string& key, std::vector<std::string> v) {
   for (const auto& name : v) {
     rng::Seeding seeding;
@@ -255,6 +266,7 @@ nlohmann::json StudyConfig::canonical() const {
   };
   // Present only when it is not the default, so that configs written before the key keep their hash.
   if (tests.error_control != ErrorControl::study) j["tests"]["error_control"] = to_string(tests.error_control);
+  if (feeds != std::vector<std::string>{"halves"}) j["feeds"] = feeds;
   return j;
 }
 
@@ -291,6 +303,7 @@ StudyConfig parse_config(const std::string& toml_text, const std::string& origin
   Section sw = top.sub("sweep");
   c.distributions = valid_distributions(sw, "distributions", sw.strings("distributions", c.distributions));
   c.seedings = valid_seedings(sw, "seedings", sw.strings("seedings", c.seedings));
+  c.feeds = valid_feeds(sw, "feeds", sw.strings("feeds", c.feeds));
   const toml::array* gens = sw.array_of_tables("generator");
   if (!gens || gens->empty()) sw.fail("generator", "at least one [[sweep.generator]] is required");
   for (std::size_t k = 0; k < gens->size(); ++k) {

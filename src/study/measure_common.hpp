@@ -28,6 +28,7 @@ void set_run(EngineConfig& c, const Cell& cell, const SceneParams& s, int thread
   c.generator = rng::validated(rng::GeneratorSpec{cell.generator, cell.rounds, rng::kPaperTeaKey});
   c.seeding = cell.reference ? rng::Seeding::distance : rng::parse_seeding(cell.seeding);  // ignored by a stream
   c.distribution = rng::parse_distribution(cell.distribution);
+  c.feed = rng::parse_feed(cell.feed);
   c.seed = cell.seed;
   // The same initial state for every generator of a replica: differences between generators are then not
   // diluted by different starting points (paired comparison).

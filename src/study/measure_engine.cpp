@@ -5,6 +5,7 @@
 
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/rng/registry.hpp"
+#include "dpdrng/stats/moments.hpp"
 #include "dpdrng/study/measure.hpp"
 #include "measure_common.hpp"
 
@@ -127,6 +128,19 @@ void record_run(const dpd::RunResult& r, CellResult& out) {
   detail::record_costs(r.timings, r.steps_done, out);
   // A run that blew up has no observables: they stay absent (null to h5py), never 0.
   if (!r.ok()) return;
+  if (r.zeta.n >= 4) {
+    // The power sums (replicas pool by adding them) and the cell's own moments, for h5py readers.
+    const stats::MomentsResult m =
+        stats::moments_of(stats::MomentSums::from_powers(r.zeta.n, r.zeta.s1, r.zeta.s2, r.zeta.s3, r.zeta.s4));
+    sc["zeta_n"] = double(r.zeta.n);
+    sc["zeta_s1"] = r.zeta.s1, sc["zeta_s2"] = r.zeta.s2, sc["zeta_s3"] = r.zeta.s3, sc["zeta_s4"] = r.zeta.s4;
+    sc["zeta_mean"] = m.mean;
+    sc["zeta_variance"] = m.variance;
+    sc["zeta_variance_ci_lo"] = m.variance_ci.low, sc["zeta_variance_ci_hi"] = m.variance_ci.high;
+    sc["zeta_second_moment"] = m.second_moment;
+    sc["zeta_skewness"] = m.skewness;
+    sc["zeta_excess_kurtosis"] = m.kurtosis;
+  }
   sc["temperature_mean"] = r.temperature.mean;
   sc["temperature_std"] = r.temperature.std;
   sc["temperature_std_sem"] = r.temperature.std_sem;

@@ -47,12 +47,12 @@ std::string cells_csv(const std::vector<CellResult>& cells) {
   for (const auto& c : cells)
     for (const auto& [k, v] : c.scalars) names.insert(k);
   std::ostringstream o;
-  o << "id,generator,rounds,distribution,seeding,dt,replica,status,unstable_step,seconds";
+  o << "id,generator,rounds,distribution,feed,seeding,dt,replica,status,unstable_step,seconds";
   for (const auto& n : names) o << ',' << n;
   o << '\n';
   for (const auto& c : cells) {
-    o << c.cell.id() << ',' << c.cell.generator << ',' << c.cell.rounds << ',' << c.cell.distribution << ','
-      << c.cell.seeding << ',' << num(c.cell.dt) << ',' << c.cell.replica << ',' << c.status << ','
+    o << c.cell.id() << ',' << c.cell.generator << ',' << c.cell.rounds << ',' << c.cell.distribution << ',' << c.cell.feed
+      << ',' << c.cell.seeding << ',' << num(c.cell.dt) << ',' << c.cell.replica << ',' << c.status << ','
       << c.unstable_step << ',' << num(c.seconds);
     for (const auto& n : names) o << ',' << (c.has(n) ? num(c.scalar(n, NAN)) : "");
     o << '\n';
@@ -166,6 +166,7 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
   write(dir / "summary.csv", summary_csv(a));
   write(dir / "pass_table.csv", pass_table_csv(a));
   write(dir / "observables.csv", observables_csv(a));
+  write(dir / "zeta.csv", zeta_csv(a));
   write(dir / "cells.csv", cells_csv(cells));
   std::vector<std::string> nist_files;
   for (const auto& v : a.variants)
@@ -182,7 +183,7 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
   md << detail::report_header(config, a, cells) << detail::unreadable_cells_markdown(options.unreadable);
 
   md << "## Verdicts\n\n"
-     << "Each variant (generator × rounds × distribution × seeding) is compared with MT19937 run with identical "
+     << "Each variant (generator × rounds × distribution and feed × seeding) is compared with MT19937 run with identical "
         "settings and the same initial states. *Indistinguishable* means that no test of the variant (observables, "
         "pass fractions, ζ correlations) differs at α = "
      << a.alpha
@@ -193,6 +194,25 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
      << summary_markdown(a) << "\n";
   for (const auto& d : dists)
     if (have("speed_vs_accuracy_" + d)) md << chart("speed_vs_accuracy_" + d, "speed against accuracy, " + d);
+
+  md << "## The numbers the force uses: ζ and the temperature\n\n"
+     << "The ζ of every production step's pairs inside r_c, pooled over the replicas. *Noise* names the "
+        "distribution and, unless it is `halves`, the feed: `halves` feeds Box–Muller the two 32-bit halves of a "
+        "one-word block (32TEA, SplitMix64, Saru, MT19937) or the first two words of a longer one; `blocks` takes "
+        "u1 and u2 as 53-bit uniforms from two blocks of the pair (distance seeding: the second hashes the "
+        "rotated separation (dy, dz, dx); pair-step: the complemented step); `inverse` puts one uniform of the "
+        "first block through Φ⁻¹. By fluctuation–dissipation k_BT ∝ σ²⟨ζ²⟩, so ⟨ζ²⟩/⟨ζ²⟩_MT − 1 predicts the "
+        "temperature shift; the measured one (replica means against MT of the same feed, 95 % from the "
+        "comparison's pooled σ) stands beside it. ⟨ζ²⟩ = 1 is tested on the large-sample normal law of the mean "
+        "of ζ² (its variance from ⟨ζ⁴⟩), Holm-corrected over the variants shown; **bold** = differs.\n\n"
+     << zeta_markdown(a) << "\n"
+     << "### Which tests flag each generator × feed\n\n"
+     << "χ² and lag-1 t look at one output word at a time and NIST at its bits; none of them sees how two "
+        "uniforms combine into ζ, which ⟨ζ²⟩ does, and which the physics feels. χ², lag-1 t: **flags** when a "
+        "pass fraction differs from 1 − α after the error control (the pass-fraction tables below). NIST reads "
+        "the pair's first block, the same words under every feed, so a feed that did not run the battery shows "
+        "the one that did. Physics: the observables that differ from MT after the error control.\n\n"
+     << flags_markdown(a) << "\n";
 
   md << "## Pass fractions (the paper's Fig. 2)\n\n"
      << "χ²: one test per tapped production step on all the step's numbers (Sturges bins), α = " << a.alpha
@@ -273,7 +293,7 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
 
   md << detail::broken_cells_markdown(cells);
   md << "\n## Files\n\n"
-     << "`summary.csv`, `pass_table.csv`, `observables.csv`, `cells.csv` (every scalar of every cell)";
+     << "`summary.csv`, `pass_table.csv`, `observables.csv`, `zeta.csv`, `cells.csv` (every scalar of every cell)";
   for (const auto& f : nist_files) md << ", `" << f << "`";
   md << "; charts in `charts/` (SVG, PNG and the gnuplot script of each); all data in `../study.h5` (h5py: "
         "`h5py.File('study.h5')['cells']`).\n";

@@ -231,3 +231,114 @@ std::string nist_final_analysis_report(const VariantReport& v, double alpha) {
 }
 
 }  // namespace dpdrng::study
+
+namespace dpdrng::study {
+namespace {
+
+const Comparison* find_observable(const VariantReport& v, const std::string& name) {
+  for (const auto& c : v.observables)
+    if (c.observable == name && c.available) return &c;
+  return nullptr;
+}
+
+// The measured shift of k_BT against the reference, (T − T_MT) / T_MT, and its 1σ (the comparison's).
+std::string measured_shift(const VariantReport& v) {
+  const Comparison* t = find_observable(v, "temperature_mean");
+  if (!t || !(t->ref != 0)) return "–";
+  const std::string b = t->decision.differs ? "**" : "";
+  std::string s = b + fmt("%+.2f %%", 100 * (t->value - t->ref) / t->ref) + b;
+  if (std::isfinite(t->sigma)) s += " ± " + fmt("%.2f %%", 100 * 1.959963984540054 * t->sigma);
+  return s;
+}
+
+std::string interval(const stats::Interval& i) { return "[" + fmt("%.4f", i.low) + ", " + fmt("%.4f", i.high) + "]"; }
+
+// The variant's flag for a group of pass fractions: "flag" when any of its streams differs.
+std::string pass_flag(const VariantReport& v, const std::string& test) {
+  bool any = false, differs = false;
+  for (const auto& p : v.passes)
+    if (p.test == test && p.available && p.trials > 0) any = true, differs |= p.decision.differs;
+  return any ? (differs ? "**flags**" : "pass") : "–";
+}
+
+// The NIST battery reads the pair's first block, the same words under every feed: a variant of another feed
+// shows the battery of its halves sibling (or of the feed that ran it).
+const VariantReport* nist_source(const Analysis& a, const VariantReport& v) {
+  if (!v.nist.empty()) return &v;
+  for (const auto& w : a.variants)
+    if (!w.nist.empty() && w.key.generator == v.key.generator && w.key.rounds == v.key.rounds &&
+        w.key.seeding == v.key.seeding && w.key.dt == v.key.dt && w.key.reference == v.key.reference &&
+        w.key.distribution.rfind(v.key.distribution.substr(0, v.key.distribution.find('-')), 0) == 0)
+      return &w;
+  return nullptr;
+}
+
+std::string physics_flags(const VariantReport& v) {
+  std::string out;
+  for (const auto& c : v.observables)
+    if (c.available && c.decision.differs) out += (out.empty() ? "" : ", ") + pretty(c.observable);
+  if (v.observables.empty() || !v.no_reference.empty()) return "–";
+  return out.empty() ? "pass" : "**" + out + "**";
+}
+
+}  // namespace
+
+std::string zeta_markdown(const Analysis& a) {
+  std::ostringstream o;
+  o << "| generator | noise | seeding | replicas | ζ draws | ⟨ζ²⟩ [95 % CI] | excess kurtosis | ⟨ζ²⟩ = 1: corrected p | "
+       "T shift predicted by ⟨ζ²⟩ | T shift measured vs MT (95 %) |\n|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const auto& v : a.variants) {
+    if (v.zeta.n == 0) continue;
+    const std::string b = v.zeta_decision.differs ? "**" : "";
+    o << "| " << v.key.label() << " | " << v.key.distribution << " | " << (v.key.reference ? "stream" : v.key.seeding)
+      << " | " << v.cells.size() << " | " << fmt("%.3g", double(v.zeta.n)) << " | " << b
+      << fmt("%.4f", v.zeta.second_moment) << b << " " << interval(v.zeta.second_moment_ci)
+      << " | " << fmt("%.3f", v.zeta.kurtosis) << " | " << adjusted(v.zeta_decision) << " | "
+      << (v.key.reference ? "(reference)" : fmt("%+.2f %%", 100 * v.zeta_predicted_shift)) << " | "
+      << (v.key.reference ? "(reference)" : measured_shift(v)) << " |\n";
+  }
+  return o.str();
+}
+
+std::string zeta_csv(const Analysis& a) {
+  std::ostringstream o;
+  o << "generator,rounds,distribution,feed,seeding,dt,replicas,zeta_n,zeta_mean,zeta_variance,variance_ci_low,"
+       "variance_ci_high,second_moment,second_moment_ci_low,second_moment_ci_high,skewness,excess_kurtosis,p,p_adjusted,"
+       "predicted_T_shift,measured_T_shift,measured_T_shift_sigma\n";
+  for (const auto& v : a.variants) {
+    if (v.zeta.n == 0) continue;
+    const Comparison* t = find_observable(v, "temperature_mean");
+    const double shift = t && t->ref != 0 ? (t->value - t->ref) / t->ref : NAN;
+    o << v.key.generator << ',' << v.key.rounds << ',' << v.key.distribution << ',' << v.key.feed << ','
+      << (v.key.reference ? "stream" : v.key.seeding) << ',' << num(v.key.dt) << ',' << v.cells.size() << ','
+      << v.zeta.n << ',' << num(v.zeta.mean) << ',' << num(v.zeta.variance) << ',' << num(v.zeta.variance_ci.low)
+      << ',' << num(v.zeta.variance_ci.high) << ',' << num(v.zeta.second_moment) << ','
+      << num(v.zeta.second_moment_ci.low) << ',' << num(v.zeta.second_moment_ci.high) << ',' << num(v.zeta.skewness)
+      << ',' << num(v.zeta.kurtosis) << ',' << num(v.zeta_decision.p) << ',' << num(v.zeta_decision.p_adjusted)
+      << ',' << num(v.zeta_predicted_shift) << ',' << num(shift) << ',' << num(t ? t->sigma : NAN) << '\n';
+  }
+  return o.str();
+}
+
+std::string flags_markdown(const Analysis& a) {
+  std::ostringstream o;
+  o << "| generator | noise | seeding | χ² | lag-1 t | NIST columns failed | ⟨ζ²⟩ = 1 | physics (observables that "
+       "differ from MT) |\n|---|---|---|---|---|---|---|---|\n";
+  for (const auto& v : a.variants) {
+    if (v.key.reference) continue;
+    const VariantReport* n = nist_source(a, v);
+    std::string nist = "–";
+    if (n && std::isfinite(n->nist_failed))
+      nist = fmt("%.0f", n->nist_failed) + " / " + fmt("%.0f", n->nist_columns) +
+             (n == &v ? "" : " (words of " + n->key.distribution + ")");
+    const std::string zeta = !v.zeta_decision.tested() ? "–"
+                             : v.zeta_decision.differs ? "**flags** (" + fmt("%.4f", v.zeta.second_moment) + ")"
+                                                       : "pass";
+    o << "| " << v.key.label() << " | " << v.key.distribution << " | " << v.key.seeding << " | "
+      << pass_flag(v, "chi2") << " | " << pass_flag(v, "ttest") << " | " << nist << " | " << zeta << " | "
+      << physics_flags(v) << " |\n";
+  }
+  return o.str();
+}
+
+}  // namespace dpdrng::study

@@ -10,12 +10,16 @@
 
 namespace dpdrng::study {
 
+std::string Cell::noise() const { return feed == "halves" ? distribution : distribution + "-" + feed; }
+
+// The feed enters the id only when it is not halves: cells of stores written without a feed keep their ids.
 std::string Cell::id() const {
   char buf[160];
+  const std::string n = noise();
   if (reference)
-    std::snprintf(buf, sizeof buf, "%s-%s-dt%g-rep%02d", generator.c_str(), distribution.c_str(), dt, replica);
+    std::snprintf(buf, sizeof buf, "%s-%s-dt%g-rep%02d", generator.c_str(), n.c_str(), dt, replica);
   else
-    std::snprintf(buf, sizeof buf, "%s-r%02d-%s-%s-dt%g-rep%02d", generator.c_str(), rounds, distribution.c_str(),
+    std::snprintf(buf, sizeof buf, "%s-r%02d-%s-%s-dt%g-rep%02d", generator.c_str(), rounds, n.c_str(),
                   seeding.c_str(), dt, replica);
   return buf;
 }
@@ -27,41 +31,46 @@ std::string Cell::label() const {
 
 std::vector<Cell> enumerate_cells(const StudyConfig& config) {
   std::vector<Cell> cells;
-  const auto wants_nist = [&](const std::string& gen, const std::string& dist, int replica) {
+  // The battery reads the pair's first block, whatever the feed: only the first feed's cells run it.
+  const auto wants_nist = [&](const std::string& gen, const std::string& dist, const std::string& feed, int replica) {
     const auto& t = config.tests;
     return std::find(t.nist_generators.begin(), t.nist_generators.end(), gen) != t.nist_generators.end() &&
            std::find(t.nist_distributions.begin(), t.nist_distributions.end(), dist) != t.nist_distributions.end() &&
-           replica < t.nist_replicas;
+           replica < t.nist_replicas && (feed == "halves" || feed == config.feeds.front());
   };
+  const std::vector<std::string> halves_only{"halves"};
   for (double dt : config.scene.dt)
     for (int rep = 0; rep < config.replicas; ++rep) {
       // A replica's seed sets the initial state (and the reference's stream); distinct per replica, shared
       // across generators.
       const std::uint64_t seed = rng::splitmix64_mix(config.seed * 0x9e3779b97f4a7c15ull + std::uint64_t(rep));
-      for (const auto& dist : config.distributions) {
-        Cell ref;
-        ref.generator = config.reference;
-        ref.rounds = 1;
-        ref.distribution = dist;
-        ref.seeding = "stream";
-        ref.dt = dt;
-        ref.replica = rep;
-        ref.reference = true;
-        ref.seed = seed;
-        ref.nist = wants_nist(ref.generator, dist, rep);
-        cells.push_back(ref);
-        for (const auto& g : config.generators)
-          for (const auto& seeding : g.seedings.empty() ? config.seedings : g.seedings)
-            for (int r : g.rounds) {
-              Cell c = ref;
-              c.generator = g.name;
-              c.rounds = r;
-              c.seeding = seeding;
-              c.reference = false;
-              c.nist = wants_nist(g.name, dist, rep);
-              cells.push_back(c);
-            }
-      }
+      for (const auto& dist : config.distributions)
+        for (const auto& feed : dist == "gauss" ? config.feeds : halves_only) {
+          // Each feed has its own reference: MT19937 under that feed (a control of the feed itself).
+          Cell ref;
+          ref.generator = config.reference;
+          ref.rounds = 1;
+          ref.distribution = dist;
+          ref.feed = feed;
+          ref.seeding = "stream";
+          ref.dt = dt;
+          ref.replica = rep;
+          ref.reference = true;
+          ref.seed = seed;
+          ref.nist = wants_nist(ref.generator, dist, feed, rep);
+          cells.push_back(ref);
+          for (const auto& g : config.generators)
+            for (const auto& seeding : g.seedings.empty() ? config.seedings : g.seedings)
+              for (int r : g.rounds) {
+                Cell c = ref;
+                c.generator = g.name;
+                c.rounds = r;
+                c.seeding = seeding;
+                c.reference = false;
+                c.nist = wants_nist(g.name, dist, feed, rep);
+                cells.push_back(c);
+              }
+        }
     }
   return cells;
 }

@@ -68,6 +68,8 @@ TEST(CliSimulate, BadWaterParametersExitTwoNamingTheParameter) {
       {kTiny + "--seed -1", "seed"},             {kTiny + "--init-seed -5", "init-seed"},
       {kTiny + "--sample-every 0", "--sample-every"}, {kTiny + "--key 1,2,3", "key"},
       {kTiny + "--integrator bogus", "integrator"},
+      {kTiny + "--feed bogus", "feed"},          {kTiny + "--distribution uniform --feed blocks", "feed"},
+      {kTiny + "--distribution uniform --feed inverse", "feed"},
       {"simulate -q --particles 1", "particles"}, {"simulate -q -n 8", "particles/density"},
       {"simulate -q -n 64 --steps -5 --equilibrate 0", "steps"},
       {"simulate -q -n 64 --steps 0 --equilibrate 0", "steps"},
@@ -91,6 +93,7 @@ TEST(CliSimulate, BadBilayerParametersExitTwoNamingTheParameter) {
       {kTinyBilayer + "--density 3", "density"},  {kTinyBilayer + "--a 25", "--a"},
       {kTinyBilayer + "--particles 100", "particles"}, {kTinyBilayer + "--rc 1", "rc"},
       {kTinyBilayer + "--integrator shardlow", "integrator"},
+      {kTinyBilayer + "--distribution uniform --feed blocks", "feed"},
       {"simulate --scene bilayer -q --steps -1 --equilibrate 0", "steps"},
       {"simulate --scene bilayer -q --steps 20 --equilibrate 20", "equilibrate"},
       {"simulate-bilayer -q --steps 20 --equilibrate 10 --warmup 5 --dt-warmup inf", "dt-warmup"},
@@ -112,14 +115,16 @@ TEST(CliSimulate, TinyWaterRunGivesTheIssuesJson) {
   EXPECT_GT(j.at("temperature_mean").get<double>(), 0.5);  // k_BT = 1 fluid, 10 samples
   EXPECT_LT(j.at("temperature_mean").get<double>(), 2.0);
   const std::set<std::string> want = {
-      "box_length", "diffusion_coefficient", "diffusion_coefficient_sem", "distribution", "generator", "integrator",
+      "box_length", "diffusion_coefficient", "diffusion_coefficient_sem", "distribution", "feed", "generator",
+      "integrator",
       "momentum_drift_per_bead", "momentum_final", "msd_fit", "pairs", "particles", "pressure",
       "pressure_conservative", "pressure_conservative_diag", "pressure_conservative_mean",
       "pressure_conservative_sem", "pressure_diag", "pressure_mean", "pressure_sem", "seeding", "status",
       "steps_done", "temperature", "temperature_mean", "temperature_sem", "temperature_std", "temperature_std_sem",
       "timings", "velocity_pdf_error_rate", "velocity_pdf_error_rate_measured_T", "velocity_pdf_error_rate_sem",
-      "velocity_pdf_error_rate_xyz"};
+      "velocity_pdf_error_rate_xyz", "zeta", "zeta_sums"};
   EXPECT_EQ(keys(j), want);
+  EXPECT_EQ(j.at("feed"), "halves");
   const std::set<std::string> timings = {
       "force_s", "list_builds", "ns_per_number", "ns_per_zeta", "particle_steps_per_s", "per_step_s",
       "production_particle_steps_per_s", "production_s", "random_numbers", "rng_share_estimate", "threads",
@@ -215,6 +220,32 @@ TEST(CliSimulate, HumanOutputNamesTheObservables) {
   for (const char* line : {"scene water: 64 beads", "status                 ok (20 steps)", "temperature k_BT",
                            "pressure (conservative)", "diffusion coefficient", "momentum drift / bead"})
     EXPECT_NE(r.out.find(line), std::string::npos) << line << "\n" << r.out;
+}
+
+}  // namespace
+
+namespace {
+
+// The ζ moments of the production steps' pairs inside r_c, under each feed; n says how many draws went in.
+TEST(CliSimulate, ZetaMomentsInTheJson) {
+  for (const char* feed : {"halves", "blocks", "inverse"}) {
+    const json j = run_json(kTiny + "-g tea32 -r 1 --feed " + feed);
+    EXPECT_EQ(j.at("feed"), feed);
+    const json& z = j.at("zeta");
+    const auto n = z.at("n").get<std::uint64_t>();
+    EXPECT_GT(n, 1000u) << feed;
+    EXPECT_EQ(n, j.at("zeta_sums").at("n").get<std::uint64_t>());
+    // Production steps only: fewer than every evaluation's pairs in range.
+    EXPECT_LT(n, j.at("timings").at("zetas").get<std::uint64_t>());
+    const double v = z.at("variance").get<double>();
+    ASSERT_EQ(z.at("variance_ci").size(), 2u);
+    EXPECT_LT(z.at("variance_ci")[0].get<double>(), v);
+    EXPECT_GT(z.at("variance_ci")[1].get<double>(), v);
+    for (const char* k : {"mean", "skewness", "kurtosis"}) EXPECT_TRUE(z.at(k).is_number()) << k;
+  }
+  const Result human = run(kTiny + "--feed blocks");
+  EXPECT_NE(human.out.find("/ feed blocks"), std::string::npos) << human.out;
+  EXPECT_NE(human.out.find("zeta (pairs in r_c)    variance"), std::string::npos) << human.out;
 }
 
 }  // namespace

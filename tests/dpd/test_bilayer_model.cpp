@@ -141,7 +141,7 @@ ForceSums patch_forces(const Patch& p, System& s) {
   w.noise_override = NoiseOverride::none;
   auto pair = make_pair_forces(w, bilayer_kernel(p.cfg, p.cfg.dt), s.size());
   Taps taps;
-  ForceSums f = pair->compute(s, VelocityView{s.vx.data(), s.vy.data(), s.vz.data()}, 1, false, false, taps);
+  ForceSums f = pair->compute(s, VelocityView{s.vx.data(), s.vy.data(), s.vz.data()}, 1, false, false, false, taps);
   const BondedSums b = BondedForces{p.cfg.bond, p.cfg.bend}.add(s, p.st.topology);
   for (int a = 0; a < 3; ++a) f.virial_cons[a] += b.virial_bond[a] + b.virial_bend[a];
   return f;

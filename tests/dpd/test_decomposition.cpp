@@ -246,7 +246,7 @@ TEST(Decomposition, OneDomainReproducesTheEngine) {
     cfg.threads = 1;
     auto engine = make_pair_forces(cfg, paper_kernel(), a.size());
     Taps taps;
-    const ForceSums fe = engine->compute(a, VelocityView{a.vx.data(), a.vy.data(), a.vz.data()}, 7, false, false, taps);
+    const ForceSums fe = engine->compute(a, VelocityView{a.vx.data(), a.vy.data(), a.vz.data()}, 7, false, false, false, taps);
     auto mine = make_decomposed_forces(noise("tea32", 1, seeding), paper_kernel(), DomainGrid{});
     BoundaryStats st;
     const ForceSums fm = mine->compute(b, VelocityView{b.vx.data(), b.vy.data(), b.vz.data()}, 7, &st, nullptr);

@@ -52,7 +52,7 @@ TEST(PairLoop, ThreeBeadsThroughThePeriodicBoundary) {
       const WaterConfig cfg = zero_noise_config(mode);
       auto pf = make_pair_forces(cfg, make_kernel(25, 1, 4.5, 1, 0.04), 3);
       Taps taps;
-      const ForceSums f = pf->compute(s, VelocityView{s.vx.data(), s.vy.data(), s.vz.data()}, 0, false, false, taps);
+      const ForceSums f = pf->compute(s, VelocityView{s.vx.data(), s.vy.data(), s.vz.data()}, 0, false, false, false, taps);
       EXPECT_NEAR(s.fx[0], 7.5, 1e-12) << to_string(mode) << " L = " << L;
       EXPECT_NEAR(s.fx[1], 7.5, 1e-12);
       EXPECT_NEAR(s.fx[2], -15.0, 1e-12);

@@ -126,7 +126,7 @@ Forces forces(const System& start, PairMode mode, const char* gen, int threads) 
   auto pf = make_pair_forces(cfg, make_kernel(25, 1, 4.5, 1, 0.04), s.size());
   Taps taps;
   Forces out;
-  out.sums = pf->compute(s, VelocityView{s.vx.data(), s.vy.data(), s.vz.data()}, 11, false, false, taps);
+  out.sums = pf->compute(s, VelocityView{s.vx.data(), s.vy.data(), s.vz.data()}, 11, false, false, false, taps);
   out.f = s.fx;
   out.f.insert(out.f.end(), s.fy.begin(), s.fy.end());
   out.f.insert(out.f.end(), s.fz.begin(), s.fz.end());

@@ -21,7 +21,7 @@ struct GeneratorOptions {
 // What `simulate` and `simulate-bilayer` both take besides the scene's physics.
 struct RunOptions {
   GeneratorOptions gen;
-  std::string pairs, seeding = "distance", distribution = "gauss";
+  std::string pairs, seeding = "distance", distribution = "gauss", feed = "halves";
   bool json = false, quiet = false;
   std::string series_dir;
 
@@ -33,13 +33,15 @@ struct RunOptions {
   // Noise, pair search, seeds, threads, sampling and output; binds the fields both scene configs name alike.
   template <class Config>
   void add_to(CLI::App& app, Config& c, const Help& help);
-  // Fills the config's generator, pair mode, seeding and distribution; throws InputError.
+  // Fills the config's generator, pair mode, seeding, distribution and feed; throws InputError.
   template <class Config>
   void apply(Config& c) const {
     c.generator = gen.spec();
     c.pairs = dpd::parse_pair_mode(pairs);
     c.seeding = rng::parse_seeding(seeding);
     c.distribution = rng::parse_distribution(distribution);
+    c.feed = rng::parse_feed(feed);
+    rng::check_feed(c.distribution, c.feed);
   }
 
  private:

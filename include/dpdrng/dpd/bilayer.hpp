@@ -58,6 +58,7 @@ struct BilayerConfig {
   rng::GeneratorSpec generator{};
   rng::Seeding seeding = rng::Seeding::distance;
   rng::Distribution distribution = rng::Distribution::gauss;
+  rng::Feed feed = rng::Feed::halves;
   std::uint64_t seed = 1;
   int threads = 0;
   // Sampling: profiles, order and the integrity check every sample_every steps
@@ -102,6 +103,7 @@ struct BilayerResult {
   bool ok() const { return status == "ok"; }
   std::int64_t steps_done = 0;
   std::string generator, seeding, distribution, pairs;
+  std::string feed = "halves";
   std::size_t particles = 0, lipids = 0;
   std::array<double, 3> box{};
 

@@ -65,6 +65,7 @@ struct WaterConfig {
   rng::GeneratorSpec generator{};
   rng::Seeding seeding = rng::Seeding::distance;
   rng::Distribution distribution = rng::Distribution::gauss;
+  rng::Feed feed = rng::Feed::halves;  // which uniforms feed the Gaussian (distribution.hpp)
   std::uint64_t seed = 1;         // pair-step key word, and the seed of the mt19937 reference stream
   std::uint64_t init_seed = 2021; // initial positions and velocities (the same for every generator)
   int threads = 0;                // 0 = OpenMP's default

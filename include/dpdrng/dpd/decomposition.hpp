@@ -119,6 +119,7 @@ struct DecompNoise {
   rng::GeneratorSpec generator{};
   DecompSeeding seeding{};
   rng::Distribution distribution = rng::Distribution::gauss;
+  rng::Feed feed = rng::Feed::halves;  // the blocks feed's second block goes through the same repair
   std::uint64_t seed = 1;  // pair-step key word
 };
 

@@ -63,6 +63,7 @@ struct RandomnessCost {
 
 struct DecompResult {
   std::string generator, seeding, distribution, domains;
+  std::string feed = "halves";
   std::size_t particles = 0;
   double box_length = 0;
   BoundaryStats snapshot;  // the first force evaluation of the decomposed run (the initial configuration)

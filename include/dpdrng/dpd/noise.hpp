@@ -1,8 +1,11 @@
 #pragma once
 // Noise sources as the pair loop sees them: raw(p, k) gives the generator's output block for pair p (k is the
-// pair's slot in this step's fixed pair order), zeta(block) turns it into ζ. Keyed hashes ignore k; the
-// mt19937 reference, a stream, fills one buffer per step in the fixed pair order and reads slot k, so its
-// numbers do not depend on the thread count either.
+// pair's slot in this step's fixed pair order), raw2(p, k) the pair's second block (read only under the blocks
+// feed), and zetas() turns a batch of blocks into ζ under the feed, a run-time field switched on once per batch.
+// Keyed hashes ignore k; the mt19937 reference, a stream, fills one buffer per step in the fixed pair order (a
+// second one after it under the blocks feed) and reads slot k, so its numbers do not depend on the thread count
+// either.
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cstdint>
@@ -13,6 +16,34 @@
 
 namespace dpdrng::dpd {
 
+// z[t] = ζ of blocks a[t] (and b[t], read under the blocks feed only) for t < m: one switch, then a plain loop.
+template <rng::Distribution D, class Block>
+inline void feed_zetas(rng::Feed f, const Block* a, const Block* b, double* z, std::size_t m) {
+  if constexpr (D == rng::Distribution::uniform) {
+    for (std::size_t t = 0; t < m; ++t) z[t] = rng::uniform_unit_variance(a[t]);
+  } else {
+    switch (f) {
+      case rng::Feed::halves:
+        for (std::size_t t = 0; t < m; ++t) z[t] = rng::box_muller(a[t]);
+        return;
+      case rng::Feed::blocks:
+        for (std::size_t t = 0; t < m; ++t) z[t] = rng::box_muller_blocks(a[t], b[t]);
+        return;
+      case rng::Feed::inverse: {
+        // The batched Φ⁻¹ (the scalar one's bits, eight lanes at a time) on chunks of uniforms.
+        constexpr std::size_t kChunk = 64;
+        double u[kChunk];
+        for (std::size_t c = 0; c < m; c += kChunk) {
+          const std::size_t n = std::min(kChunk, m - c);
+          for (std::size_t t = 0; t < n; ++t) u[t] = rng::to_unit_mid(a[c + t][0]);
+          rng::inverse_normal(u, z + c, n);
+        }
+        return;
+      }
+    }
+  }
+}
+
 template <class PN>  // PN = rng::PairNoise<G, S, D>
 struct HashNoise {
   using Block = typename PN::Generator::Block;
@@ -21,12 +52,19 @@ struct HashNoise {
   static constexpr bool kZero = false;
   PN pn;
 
+  rng::Feed feed() const { return pn.feed; }
   void begin_step(std::size_t) {}
   Block raw(const rng::PairInput& p, std::size_t) const { return rng::pair_block<PN::kSeeding>(pn.gen, p, pn.seed); }
-  double zeta(const Block& b) const { return rng::draw<PN::kDistribution>(b); }
+  Block raw2(const rng::PairInput& p, std::size_t) const {
+    return rng::pair_block<PN::kSeeding>(pn.gen, rng::second_input(p), pn.seed);
+  }
+  void zetas(const Block* a, const Block* b, double* z, std::size_t m) const {
+    feed_zetas<PN::kDistribution>(pn.feed, a, b, z, m);
+  }
 };
 
-// The reference: two successive std::mt19937 draws per pair slot (high word first, as rng::Mt19937::next64).
+// The reference: two successive std::mt19937 draws per pair slot (high word first, as rng::Mt19937::next64);
+// under the blocks feed the step's second buffer follows the first in the stream.
 template <rng::Distribution D>
 struct StreamNoise {
   using Block = std::array<std::uint64_t, 1>;
@@ -34,15 +72,21 @@ struct StreamNoise {
   static constexpr bool kStream = true;
   static constexpr bool kZero = false;
   rng::Mt19937 mt;
-  std::vector<std::uint64_t> buffer;
+  rng::Feed feed_ = rng::Feed::halves;
+  std::vector<std::uint64_t> buffer, buffer2;
 
-  explicit StreamNoise(std::uint64_t seed) : mt(seed) {}
+  StreamNoise(std::uint64_t seed, rng::Feed feed) : mt(seed), feed_(feed) {}
+  rng::Feed feed() const { return feed_; }
   void begin_step(std::size_t slots) {
     buffer.resize(slots);
     for (auto& w : buffer) w = mt.next64();
+    if (feed_ != rng::Feed::blocks) return;
+    buffer2.resize(slots);
+    for (auto& w : buffer2) w = mt.next64();
   }
   Block raw(const rng::PairInput&, std::size_t k) const { return {buffer[k]}; }
-  double zeta(const Block& b) const { return rng::draw<D>(b); }
+  Block raw2(const rng::PairInput&, std::size_t k) const { return {buffer2[k]}; }
+  void zetas(const Block* a, const Block* b, double* z, std::size_t m) const { feed_zetas<D>(feed_, a, b, z, m); }
 };
 
 // Benchmark baselines (NoiseOverride): the same loop without the generator, or without anything random.
@@ -52,9 +96,13 @@ struct UnhashedNoise {
   static constexpr int kWords = 1;
   static constexpr bool kStream = false;
   static constexpr bool kZero = false;
+  rng::Feed feed_ = rng::Feed::halves;
+
+  rng::Feed feed() const { return feed_; }
   void begin_step(std::size_t) {}
   Block raw(const rng::PairInput& p, std::size_t) const { return {std::bit_cast<std::uint64_t>(p.dx) ^ p.step}; }
-  double zeta(const Block& b) const { return rng::draw<D>(b); }
+  Block raw2(const rng::PairInput& p, std::size_t k) const { return raw(rng::second_input(p), k); }
+  void zetas(const Block* a, const Block* b, double* z, std::size_t m) const { feed_zetas<D>(feed_, a, b, z, m); }
 };
 
 struct ZeroNoise {
@@ -62,9 +110,13 @@ struct ZeroNoise {
   static constexpr int kWords = 1;
   static constexpr bool kStream = false;
   static constexpr bool kZero = true;
+  rng::Feed feed() const { return rng::Feed::halves; }
   void begin_step(std::size_t) {}
   Block raw(const rng::PairInput&, std::size_t) const { return {0}; }
-  double zeta(const Block&) const { return 0.0; }
+  Block raw2(const rng::PairInput&, std::size_t) const { return {0}; }
+  void zetas(const Block*, const Block*, double* z, std::size_t m) const {
+    for (std::size_t t = 0; t < m; ++t) z[t] = 0.0;
+  }
 };
 
 }  // namespace dpdrng::dpd

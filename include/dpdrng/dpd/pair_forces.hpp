@@ -17,12 +17,31 @@
 
 namespace dpdrng::dpd {
 
+// Power sums of the ζ drawn for pairs inside r_c, from which stats/ takes the moments a run reports. Partial
+// sums (per row, per cell) are merged in a fixed order, so the totals do not depend on the thread count.
+struct ZetaSums {
+  std::uint64_t n = 0;
+  double s1 = 0, s2 = 0, s3 = 0, s4 = 0;
+
+  void add(const double* z, std::size_t m) {
+    double a1 = 0, a2 = 0, a3 = 0, a4 = 0;
+    for (std::size_t t = 0; t < m; ++t) {
+      const double x = z[t], x2 = x * x;
+      a1 += x, a2 += x2, a3 += x2 * x, a4 += x2 * x2;
+    }
+    n += m, s1 += a1, s2 += a2, s3 += a3, s4 += a4;
+  }
+  void add(double z) { add(&z, 1); }
+  void merge(const ZetaSums& o) { n += o.n, s1 += o.s1, s2 += o.s2, s3 += o.s3, s4 += o.s4; }
+};
+
 struct ForceSums {
   std::array<double, 3> virial{};       // Σ_pairs (r_ij)_α (F_ij)_α, all three pair forces
   std::array<double, 3> virial_cons{};  // the same for the conservative force alone
   double min_r2 = 0;                    // closest pair seen (inside r_c; r_c² if none)
   std::uint64_t in_range = 0;           // pairs inside r_c
   std::uint64_t numbers = 0;            // generator calls this step
+  ZetaSums zeta;                        // the ζ of the pairs inside r_c, when asked for (tap_zeta)
 };
 
 // Raw generator output of one force-evaluation step; words[1] is used by two-word generators (tea64's b).
@@ -55,9 +74,10 @@ class PairForces {
  public:
   virtual ~PairForces() = default;
   // Overwrites s.f with the pair forces at s.x and velocities v, for force-evaluation number `step`.
-  // tap_raw: keep this step's raw words; tap_series: append to the pair series.
+  // tap_raw: keep this step's raw words (the pair's first block); tap_series: append to the pair series;
+  // tap_zeta: fill ForceSums::zeta.
   virtual ForceSums compute(System& s, VelocityView v, std::uint64_t step, bool tap_raw, bool tap_series,
-                            Taps& taps) = 0;
+                            bool tap_zeta, Taps& taps) = 0;
   // Calibration on this run's noise: nanoseconds per generator call (raw words, batched as in the pair loop;
   // mt19937: per word of the step's buffer) and per distribution transform (ζ from a block).
   virtual double ns_per_number() const = 0;

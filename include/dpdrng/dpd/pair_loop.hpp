@@ -10,6 +10,8 @@
 //          neighbours are done. Each layer's forces go back to the System as soon as they are final.
 //          Generator inputs use the beads' own indices, so nothing but the summation order depends on the
 //          sorting.
+// Both modes turn a row's or a cell bead's blocks into ζ in one batch (noise.zetas: the feed is switched on once
+// per batch, not per pair), and compute the second blocks only under the blocks feed.
 #include <omp.h>
 
 #include <algorithm>
@@ -59,7 +61,7 @@ class PairLoop final : public PairForces {
   int words_per_pair() const override { return Noise::kWords; }
   std::uint64_t list_builds() const override { return cells_.builds(); }
 
-  ForceSums compute(System& s, VelocityView v, std::uint64_t step, bool tap_raw, bool tap_series,
+  ForceSums compute(System& s, VelocityView v, std::uint64_t step, bool tap_raw, bool tap_series, bool tap_zeta,
                     Taps& taps) override {
     const std::size_t n = s.size();
     RawTap* tap = nullptr;
@@ -68,7 +70,9 @@ class PairLoop final : public PairForces {
       tap->step = static_cast<std::int64_t>(step);
       tap->words_per_pair = Noise::kWords;
     }
-    const Ctx c{s, v, step, tap};
+    const Ctx c{s, v, step, tap, tap_zeta && !Noise::kZero, noise_.feed() == rng::Feed::blocks};
+    // Generator calls per pair: the blocks feed hashes a second block.
+    const std::uint64_t calls = Noise::kZero ? 0 : c.two_blocks ? 2 : 1;
     ForceSums sums;
     if (mode_ == PairMode::all) {
       const std::size_t slots = n * (n - 1) / 2;
@@ -78,10 +82,10 @@ class PairLoop final : public PairForces {
 #pragma omp parallel for num_threads(threads_) schedule(dynamic, 16)
       for (std::size_t i = 0; i < n; ++i) row_all(c, static_cast<std::uint32_t>(i), scratch_[omp_get_thread_num()]);
       sums = reduce(s);
-      sums.numbers = Noise::kZero ? 0 : slots;
+      sums.numbers = calls * slots;
     } else {
       sums = compute_cells(c);
-      sums.numbers = Noise::kZero ? 0 : sums.in_range;
+      sums.numbers = calls * sums.in_range;
     }
     if (tap_series && !Noise::kZero) record_series(s, step, taps);
     return sums;
@@ -102,15 +106,18 @@ class PairLoop final : public PairForces {
     std::uint32_t count = 0;
     double w[3] = {0, 0, 0}, wc[3] = {0, 0, 0};
     double min_r2 = 0;
+    ZetaSums zeta;
   };
   struct Scratch {
     std::vector<double> dx, dy, dz, r2;
     std::vector<std::uint32_t> j;
-    std::vector<typename Noise::Block> blk;
+    std::vector<typename Noise::Block> blk, blk2;  // the pairs' blocks; their second blocks (blocks feed)
+    std::vector<double> zeta;
     std::vector<double> cx, cy, cz;   // cells: coordinates of a cell's candidates, contiguous
     std::vector<std::uint32_t> cand;  // cells: their sorted indices
     void resize(std::size_t n) {
-      dx.resize(n), dy.resize(n), dz.resize(n), r2.resize(n), j.resize(n), blk.resize(n);
+      dx.resize(n), dy.resize(n), dz.resize(n), r2.resize(n), j.resize(n), blk.resize(n), blk2.resize(n);
+      zeta.resize(n);
       cx.resize(n), cy.resize(n), cz.resize(n), cand.resize(n);
     }
   };
@@ -118,12 +125,14 @@ class PairLoop final : public PairForces {
     double w[3] = {0, 0, 0}, wc[3] = {0, 0, 0};
     double min_r2 = 0;
     std::uint64_t count = 0;
+    ZetaSums zeta;
   };
   struct Ctx {
     System& s;
     VelocityView v;
     std::uint64_t step;
     RawTap* tap;
+    bool tap_zeta, two_blocks;
   };
 
   // Pass 2, shared by both modes: forces for the m in-range pairs held in sc (partners sc.j, blocks sc.blk).
@@ -135,10 +144,13 @@ class PairLoop final : public PairForces {
     double fx = 0, fy = 0, fz = 0, w0 = 0, w1 = 0, w2 = 0, c0 = 0, c1 = 0, c2 = 0;
     double min_r2 = k_.rc2();
     if (row.rec.size() < m) row.rec.resize(m);
+    noise_.zetas(sc.blk.data(), sc.blk2.data(), sc.zeta.data(), m);
+    row.zeta = ZetaSums{};
+    if (c.tap_zeta) row.zeta.add(sc.zeta.data(), m);
     for (std::size_t t = 0; t < m; ++t) {
       const std::uint32_t j = sc.j[t];
       const double dx = sc.dx[t], dy = sc.dy[t], dz = sc.dz[t], r2 = sc.r2[t];
-      const double zeta = noise_.zeta(sc.blk[t]);
+      const double zeta = sc.zeta[t];
       const PairForce pf = DpdKernel::evaluate(r2, dx, dy, dz, c.v.vx[j] - vxi, c.v.vy[j] - vyi, c.v.vz[j] - vzi,
                                                arow[s.type[j]], zeta, rc, gamma, sig);
       const double gx = pf.s * dx, gy = pf.s * dy, gz = pf.s * dz;
@@ -167,11 +179,15 @@ class PairLoop final : public PairForces {
       sc.resize(kCalls);
       for (std::size_t t = 0; t < kCalls; ++t)
         sc.dx[t] = 0.9 - 4e-4 * t, sc.dy[t] = 0.25 - 1e-4 * t, sc.dz[t] = 1e-4 * t - 0.1;
+      const bool two = noise.feed() == rng::Feed::blocks;
       auto fill = [&] {
         if constexpr (Noise::kStream) noise.begin_step(kCalls);
         for (std::size_t t = 0; t < kCalls; ++t)
           sc.blk[t] = noise.raw(rng::PairInput{7, std::uint32_t(8 + t), sc.dx[t], sc.dy[t], sc.dz[t], 99}, t);
       };
+      if (two)
+        for (std::size_t t = 0; t < kCalls; ++t)
+          sc.blk2[t] = noise.raw2(rng::PairInput{7, std::uint32_t(8 + t), sc.dx[t], sc.dy[t], sc.dz[t], 99}, t);
       fill();  // warm-up, and real blocks for the ζ timing
       double best = std::numeric_limits<double>::infinity();
       volatile double sink = 0;
@@ -179,7 +195,7 @@ class PairLoop final : public PairForces {
         double acc = 0;
         const auto t0 = std::chrono::steady_clock::now();
         if (zeta_only)
-          for (std::size_t t = 0; t < kCalls; ++t) acc += noise.zeta(sc.blk[t]);
+          noise.zetas(sc.blk.data(), sc.blk2.data(), sc.zeta.data(), kCalls), acc = sc.zeta[kCalls / 2];
         else
           fill(), acc = double(sc.blk[kCalls / 2][0] & 1);
         const auto t1 = std::chrono::steady_clock::now();
@@ -207,8 +223,17 @@ class PairLoop final : public PairForces {
     if (c.tap)
       for (int w = 0; w < Noise::kWords; ++w)
         for (std::size_t t = 0; t < m; ++t) c.tap->words[w][base + t] = blk[t][w];
-    // Compact the pairs inside r_c in place (t' ≤ t), keeping their order.
+    // Compact the pairs inside r_c in place (t' ≤ t), keeping their order; second blocks first, while r2s
+    // still holds every pair.
     const double rc2 = k_.rc2();
+    if (c.two_blocks) {
+      auto* blk2 = sc.blk2.data();
+      for (std::size_t t = 0; t < m; ++t)
+        blk2[t] = noise_.raw2(rng::PairInput{i, std::uint32_t(i + 1 + t), dxs[t], dys[t], dzs[t], c.step}, base + t);
+      std::size_t k2 = 0;
+      for (std::size_t t = 0; t < m; ++t)
+        if (r2s[t] < rc2) blk2[k2++] = blk2[t];
+    }
     std::size_t k = 0;
     for (std::size_t t = 0; t < m; ++t) {
       if (!(r2s[t] < rc2)) continue;
@@ -302,11 +327,19 @@ class PairLoop final : public PairForces {
     for (std::size_t q = 0; q < own; ++q) {
       const std::uint32_t a = cells_.begin(c) + std::uint32_t(q);
       const std::size_t k = in_range(box, a, q, m, sc);
-      if constexpr (!Noise::kZero)
+      if constexpr (!Noise::kZero) {
         for (std::size_t t = 0; t < k; ++t) {
           const rng::PairInput p{ids[a], ids[sc.j[t]], sc.dx[t], sc.dy[t], sc.dz[t], cx.step};
           sc.blk[t] = noise_.raw(rng::canonical(p), slot + t);
         }
+        if (cx.two_blocks)
+          for (std::size_t t = 0; t < k; ++t) {
+            const rng::PairInput p{ids[a], ids[sc.j[t]], sc.dx[t], sc.dy[t], sc.dz[t], cx.step};
+            sc.blk2[t] = noise_.raw2(rng::canonical(p), slot + t);
+          }
+        noise_.zetas(sc.blk.data(), sc.blk2.data(), sc.zeta.data(), k);
+        if (cx.tap_zeta) cs.zeta.add(sc.zeta.data(), k);
+      }
       if (tap)
         for (int w = 0; w < Noise::kWords; ++w)
           for (std::size_t t = 0; t < k; ++t) cell_tap_[c][w].push_back(sc.blk[t][w]);
@@ -317,7 +350,7 @@ class PairLoop final : public PairForces {
       for (std::size_t t = 0; t < k; ++t) {
         const std::uint32_t b = sc.j[t];
         const double dx = sc.dx[t], dy = sc.dy[t], dz = sc.dz[t], r2 = sc.r2[t];
-        const double zeta = Noise::kZero ? 0.0 : noise_.zeta(sc.blk[t]);
+        const double zeta = Noise::kZero ? 0.0 : sc.zeta[t];
         const PairForce pf = DpdKernel::evaluate(r2, dx, dy, dz, vxs_[b] - vxa, vys_[b] - vya, vzs_[b] - vza,
                                                  arow[types_[b]], zeta, rc, gamma, sig);
         const double gx = pf.s * dx, gy = pf.s * dy, gz = pf.s * dz;
@@ -365,6 +398,7 @@ class PairLoop final : public PairForces {
       for (int a = 0; a < 3; ++a) sums.virial[a] += cs.w[a], sums.virial_cons[a] += cs.wc[a];
       sums.min_r2 = std::min(sums.min_r2, cs.min_r2);
       sums.in_range += cs.count;
+      sums.zeta.merge(cs.zeta);
     }
     if (tap)
       for (int c = 0; c < nc; ++c)
@@ -460,6 +494,7 @@ class PairLoop final : public PairForces {
       for (int a = 0; a < 3; ++a) sums.virial[a] += row.w[a], sums.virial_cons[a] += row.wc[a];
       sums.min_r2 = std::min(sums.min_r2, row.min_r2);
       sums.in_range += row.count;
+      sums.zeta.merge(row.zeta);
     }
     return sums;
   }
@@ -479,10 +514,15 @@ class PairLoop final : public PairForces {
       const std::uint32_t i = ser.i, j = ser.j;
       const double dx = min_image(s.x[j] - s.x[i], Lx, Lx / 2), dy = min_image(s.y[j] - s.y[i], Ly, Ly / 2),
                    dz = min_image(s.z[j] - s.z[i], Lz, Lz / 2);
-      const auto blk = noise_.raw(rng::PairInput{i, j, dx, dy, dz, step}, pair_slot(i, j, s.size()));
+      const rng::PairInput p{i, j, dx, dy, dz, step};
+      const std::size_t slot = pair_slot(i, j, s.size());
+      const auto blk = noise_.raw(p, slot);
+      const auto blk2 = noise_.feed() == rng::Feed::blocks ? noise_.raw2(p, slot) : blk;
+      double zeta = 0;
+      noise_.zetas(&blk, &blk2, &zeta, 1);
       ser.steps.push_back(static_cast<std::int64_t>(step));
       for (int w = 0; w < Noise::kWords; ++w) ser.words[w].push_back(blk[w]);
-      ser.zeta.push_back(noise_.zeta(blk));
+      ser.zeta.push_back(zeta);
     }
   }
 

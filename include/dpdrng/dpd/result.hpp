@@ -83,6 +83,7 @@ struct RunResult {
   bool ok() const { return status == "ok"; }
   std::int64_t steps_done = 0;
   std::string generator, seeding, distribution, pairs;
+  std::string feed = "halves";
   std::string integrator = "mvv";
   std::size_t particles = 0;
   double box_length = 0;
@@ -99,6 +100,7 @@ struct RunResult {
   Series series;
   Taps taps;
   Timings timings;
+  ZetaSums zeta;  // every ζ of the production steps' pairs inside r_c (none for a benchmark baseline)
 };
 
 // Scalars only unless `arrays` (then also pdf, msd, g(r), series; taps never: they are for the tests).
@@ -107,6 +109,7 @@ nlohmann::json to_json(const RunResult& r, bool arrays);
 // Pieces every scene's JSON record shares, so that the water and bilayer records spell them alike.
 nlohmann::json to_json(const Stat& s);           // {mean, std, sem, n}
 nlohmann::json timings_json(const Timings& t);   // the whole-run timings (not the production-only figures)
+nlohmann::json to_json(const ZetaSums& z);       // {n, s1, s2, s3, s4}: the power sums Σζ^k
 void put_mean_sem(nlohmann::json& j, const std::string& key, const Stat& s);   // key_mean, key_sem
 void put_value_sem(nlohmann::json& j, const std::string& key, const Stat& s);  // key (the mean), key_sem
 // "unstable at step k: …": the run blew up, and its observables mean nothing.
@@ -121,6 +124,7 @@ void put_run_labels(nlohmann::json& j, const Result& r) {
   j["generator"] = r.generator;
   j["seeding"] = r.seeding;
   j["distribution"] = r.distribution;
+  j["feed"] = r.feed;
   j["pairs"] = r.pairs;
   j["particles"] = r.particles;
 }

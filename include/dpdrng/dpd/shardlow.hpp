@@ -28,6 +28,8 @@ class ShardlowSweep {
   // distribution on d = r_j − r_i) or the mt19937 stream drawn in sweep order.
   explicit ShardlowSweep(const WaterConfig& cfg);
   void sweep(System& s, std::uint64_t step);
+  // The ζ the last sweep drew (in its fixed pair order).
+  const ZetaSums& zeta_sums() const { return zeta_sums_; }
 
  private:
   // S1 update of one pair (i < j) at minimum-image separation d = r_j − r_i, r² < r_c².
@@ -37,6 +39,7 @@ class ShardlowSweep {
 
   double rc_, gamma_, sigma_, dt_;
   std::function<double(const rng::PairInput&)> zeta_;
+  ZetaSums zeta_sums_;
   int nc_[3] = {0, 0, 0};
   std::vector<std::uint32_t> cell_start_, cell_beads_, bead_cell_;
 };

@@ -6,6 +6,7 @@
 #include <numbers>
 #include <string_view>
 
+#include "dpdrng/rng/inverse_normal.hpp"
 #include "dpdrng/rng/simd.hpp"
 #include "dpdrng/rng/unit_math.hpp"
 #include "dpdrng/rng/unit_math_f32.hpp"
@@ -18,6 +19,16 @@ constexpr double to_unit(std::uint64_t w) { return static_cast<double>(w >> 11) 
 constexpr double to_unit_open0(std::uint64_t w) { return static_cast<double>((w >> 11) + 1) * 0x1p-53; }
 
 enum class Distribution { gauss, uniform };
+
+// Which uniforms feed the Gaussian (the uniform distribution always takes one word: halves only).
+//  halves:  Box–Muller on one block as below (for a one-word block its two 32-bit halves): the default, and the
+//           only feed the paper's text admits for 32TEA, whose one-round halves are dependent (⟨ζ²⟩ ≈ 0.965).
+//  blocks:  Box–Muller with u1 from the pair's block and u2 from a second block of the same pair (seeding.hpp,
+//           second_input), each the 53 top bits of the block's first word.
+//  inverse: one uniform from the block's first word (its top 52 bits, on the odd multiples of 2^-53) through the
+//           inverse normal CDF: no pairing at all.
+enum class Feed { halves, blocks, inverse };
+inline constexpr Feed kFeeds[] = {Feed::halves, Feed::blocks, Feed::inverse};
 
 // Groot & Warren (1997): a uniform variable of unit variance gives the same DPD physics as a Gaussian.
 template <std::size_t N>
@@ -75,7 +86,36 @@ inline double draw(const std::array<std::uint64_t, N>& b) {
     return uniform_unit_variance(b);
 }
 
+// Box–Muller fed by two blocks: u1 = the first word of a in (0, 1], u2 = the first word of b in [0, 1), both
+// 53-bit, through the two-word path (double precision).
+template <std::size_t N>
+inline double box_muller_blocks(const std::array<std::uint64_t, N>& a, const std::array<std::uint64_t, N>& b) {
+  return box_muller(std::array<std::uint64_t, 2>{a[0], b[0]});
+}
+
+// Φ⁻¹ of the first word's uniform on the odd multiples of 2^-53 (to_unit_mid): never 0 or 1, symmetric about ½.
+template <std::size_t N>
+inline double inverse_gauss(const std::array<std::uint64_t, N>& b) {
+  return inverse_normal(to_unit_mid(b[0]));
+}
+
+// ζ from the pair's block a (and, for the blocks feed, its second block b) under a feed chosen at run time.
+template <Distribution D, std::size_t N>
+inline double draw(Feed f, const std::array<std::uint64_t, N>& a, const std::array<std::uint64_t, N>& b) {
+  if constexpr (D == Distribution::uniform) return uniform_unit_variance(a);
+  switch (f) {
+    case Feed::blocks: return box_muller_blocks(a, b);
+    case Feed::inverse: return inverse_gauss(a);
+    case Feed::halves: break;
+  }
+  return box_muller(a);
+}
+
 Distribution parse_distribution(std::string_view name);  // throws InputError
 std::string_view to_string(Distribution d);
+Feed parse_feed(std::string_view name);  // throws InputError
+std::string_view to_string(Feed f);
+// InputError unless the feed applies to the distribution (uniform noise takes halves only).
+void check_feed(Distribution d, Feed f);
 
 }  // namespace dpdrng::rng

@@ -72,15 +72,17 @@ decltype(auto) with_hash(const GeneratorSpec& s, F&& f) {
 }
 
 
-// Calls f(PairNoise<G, S, D>) for a keyed hash, a pair seeding and a distribution chosen at run time.
+// Calls f(PairNoise<G, S, D>) for a keyed hash, a pair seeding and a distribution chosen at run time; the feed
+// is the noise's run-time field.
 template <class F>
 decltype(auto) with_pair_noise(const GeneratorSpec& s, Seeding seeding, Distribution dist, std::uint64_t seed,
-                               F&& f) {
+                               F&& f, Feed feed = Feed::halves) {
+  check_feed(dist, feed);
   return with_hash(s, [&](const auto& gen) -> decltype(auto) {
     using G = std::decay_t<decltype(gen)>;
     auto with_dist = [&]<Seeding S>() -> decltype(auto) {
-      if (dist == Distribution::gauss) return f(PairNoise<G, S, Distribution::gauss>{gen, seed});
-      return f(PairNoise<G, S, Distribution::uniform>{gen, seed});
+      if (dist == Distribution::gauss) return f(PairNoise<G, S, Distribution::gauss>{gen, seed, feed});
+      return f(PairNoise<G, S, Distribution::uniform>{gen, seed, feed});
     };
     if (seeding == Seeding::distance) return with_dist.template operator()<Seeding::distance>();
     if (seeding == Seeding::pair_step) return with_dist.template operator()<Seeding::pair_step>();

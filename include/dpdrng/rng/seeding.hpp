@@ -45,7 +45,15 @@ inline auto pair_block(const G& gen, const PairInput& p, std::uint64_t seed) {
     return gen.pair_step(p.i, p.j, p.step, seed);
 }
 
-// ζ for one pair and step: generator ∘ seeding ∘ distribution, all resolved at compile time.
+// The input of a pair's second block (the blocks feed): the separation's components rotated, (dy, dz, dx), which
+// distance seeding hashes (32TEA, SplitMix64 and Saru hash the first component: dy; 64TEA, Philox and Threefry
+// the first two: (dy, dz)), and the step complemented, a stream that pair-step seeding never reaches from the
+// first block (steps stay below 2^63). The map commutes with canonical() (it rotates and negates alike and keeps
+// i, j), so ζ_ij = ζ_ji still holds; it reads only the separation both owners of a boundary pair already agree
+// on (or round to one grid alike), so the decomposition repairs carry over unchanged.
+constexpr PairInput second_input(PairInput p) { return {p.i, p.j, p.dy, p.dz, p.dx, ~p.step}; }
+
+// ζ for one pair and step: generator ∘ seeding ∘ distribution resolved at compile time, the feed at run time.
 template <class G, Seeding S, Distribution D>
 struct PairNoise {
   using Generator = G;
@@ -54,9 +62,14 @@ struct PairNoise {
 
   G gen;
   std::uint64_t seed = 0;
+  Feed feed = Feed::halves;
 
   // p must already be canonical (the pair loop visits i < j); call canonical() otherwise.
-  double operator()(const PairInput& p) const { return draw<D>(pair_block<S>(gen, p, seed)); }
+  double operator()(const PairInput& p) const {
+    const auto a = pair_block<S>(gen, p, seed);
+    if (feed != Feed::blocks) return draw<D>(feed, a, a);
+    return draw<D>(feed, a, pair_block<S>(gen, second_input(p), seed));
+  }
 };
 
 }  // namespace dpdrng::rng

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "dpdrng/stats/mean_tests.hpp"
+#include "dpdrng/stats/moments.hpp"
 #include "dpdrng/study/cell_result.hpp"
 #include "dpdrng/study/config.hpp"
 
@@ -17,10 +18,11 @@ namespace dpdrng::study {
 struct VariantKey {
   std::string generator;
   int rounds = 1;
-  std::string distribution;
+  std::string distribution;  // with its feed unless halves (Cell::noise): "gauss", "gauss-blocks", "uniform"
   std::string seeding;
   double dt = 0.04;
   bool reference = false;
+  std::string feed = "halves";
 
   std::string label() const;  // "tea32(1)"
   auto operator<=>(const VariantKey&) const = default;
@@ -103,6 +105,11 @@ struct VariantReport {
   std::string nist_report;               // the battery's own finalAnalysisReport text, when stored
   double nist_sequences = 0, nist_failed = NAN, nist_columns = 0;
   double ns_per_number = NAN, step_ms = NAN, rng_share = NAN;
+  // ζ of the production steps' pairs inside r_c, the replicas' power sums added (n = 0: fewer than 4 stored).
+  stats::MomentsResult zeta;
+  Decision zeta_decision;  // ⟨ζ²⟩ = 1, Holm over every variant with ζ (a family apart from the verdicts')
+  // ⟨ζ²⟩ / ⟨ζ²⟩_reference − 1: the shift of k_BT that fluctuation–dissipation predicts (T ∝ σ²⟨ζ²⟩).
+  double zeta_predicted_shift = NAN;
   // Why this variant has no verdict against the reference (empty when it has one): its reference replicas
   // are missing, unreadable or failed.
   std::string no_reference;

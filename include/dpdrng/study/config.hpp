@@ -64,6 +64,9 @@ struct StudyConfig {
   std::uint64_t seed = 1;
   std::vector<GeneratorEntry> generators;
   std::vector<std::string> distributions{"gauss", "uniform"};
+  // Which uniforms feed the Gaussian (rng::Feed); uniform noise always takes halves, so its cells are not
+  // multiplied by the feeds.
+  std::vector<std::string> feeds{"halves"};
   std::vector<std::string> seedings{"distance"};
   SceneParams scene;
   TestParams tests;

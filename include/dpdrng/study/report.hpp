@@ -31,6 +31,12 @@ std::string observables_markdown(const Analysis& a, const std::string& distribut
 std::string summary_markdown(const Analysis& a);
 std::string summary_csv(const Analysis& a);
 std::string cost_markdown(const Analysis& a);
+// Per variant: ⟨ζ²⟩ of the force's numbers with its CI and the temperature shift it predicts, beside the shift
+// measured against MT.
+std::string zeta_markdown(const Analysis& a);
+std::string zeta_csv(const Analysis& a);
+// Per generator × feed: which tests flag it (χ², lag-1 t, NIST, ⟨ζ²⟩, the physical observables).
+std::string flags_markdown(const Analysis& a);
 // The NIST reference suite's finalAnalysisReport layout for one variant's battery.
 std::string nist_final_analysis_report(const VariantReport& v, double alpha);
 

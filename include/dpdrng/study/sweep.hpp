@@ -14,6 +14,7 @@ struct Cell {
   std::string generator;
   int rounds = 1;
   std::string distribution;
+  std::string feed = "halves";  // rng::Feed; a store written without the field reads halves
   std::string seeding;  // "stream" for the reference
   double dt = 0.04;
   int replica = 0;
@@ -21,6 +22,8 @@ struct Cell {
   bool nist = false;  // this cell also feeds its outputs to the NIST battery
   std::uint64_t seed = 0;  // shared by all cells of one replica: paired comparisons start from the same state
 
+  // The distribution with its feed when that is not halves: "gauss", "gauss-blocks", "uniform".
+  std::string noise() const;
   std::string id() const;     // e.g. "tea32-r01-gauss-distance-dt0.04-rep00", a valid file and group name
   std::string label() const;  // e.g. "tea32(1)"
 };
