@@ -84,6 +84,7 @@ void WaterConfig::validate() const {
     bad("density", num(density) + " with pairs = cells: " + num(cells) + " cells of width r_c for " +
                        std::to_string(particles) + " beads, more than 64 a bead: use pairs = all or a higher density");
   rng::validated(generator);  // names the generator and its round range in the error
+  rng::check_defect_seeding(generator, seeding);
   if (seeding == rng::Seeding::counter) bad("seeding", "'counter' makes streams; pair noise needs distance or pair-step");
   if (threads < 0) bad("threads", "must not be negative");
   if (sample_every < 1) bad("sample_every", "at least 1");

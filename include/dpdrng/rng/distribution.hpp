@@ -75,6 +75,11 @@ inline double draw(const std::array<std::uint64_t, N>& b) {
     return uniform_unit_variance(b);
 }
 
+// The defect generator's ζ (defect.hpp), declared here so that every qualified rng::draw<D> finds it.
+struct DefectBlock;
+template <Distribution D>
+double draw(const DefectBlock& b);
+
 Distribution parse_distribution(std::string_view name);  // throws InputError
 std::string_view to_string(Distribution d);
 
