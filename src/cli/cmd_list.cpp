@@ -20,7 +20,7 @@ std::string rounds_text(const rng::GeneratorInfo& g) {
 void run_list(bool json) {
   if (json) {
     nlohmann::json out = nlohmann::json::array();
-    for (const auto& g : rng::generator_table())
+    for (const auto& g : rng::generator_table()) {
       out.push_back({{"name", g.name},
                      {"default_rounds", g.default_rounds},
                      {"min_rounds", g.min_rounds},
@@ -28,6 +28,8 @@ void run_list(bool json) {
                      {"safe_rounds", g.safe_rounds},
                      {"description", g.description},
                      {"keyed_hash", g.keyed_hash}});
+      out.back()["syntax"] = g.name == "defect" ? rng::defect_syntax() : std::string(g.name);
+    }
     std::cout << out.dump(2) << "\n";
     return;
   }
@@ -36,6 +38,10 @@ void run_list(bool json) {
                 g.keyed_hash ? "keyed hash (pair seedings, counter streams)" : "sequential stream only");
     std::printf("%13s %s\n%13s safe: %s\n", "", std::string(g.description).c_str(), "",
                 std::string(g.safe_rounds).c_str());
+    if (g.name == "defect")
+      std::printf("%13s name: %s\n%13s zeta = mean + sqrt(1+variance) * (lag1 * eta(t-1) + sqrt(1-lag1^2) * eta(t)),\n"
+                  "%13s eta = Philox4x32-10's zeta; lag1 needs seeding pair-step\n",
+                  "", rng::defect_syntax().c_str(), "", "");
   }
 }
 

@@ -1,5 +1,6 @@
-// dpdrng study run|merge|report|cells: thin glue over dpdrng::study.
+// dpdrng study run|merge|report|cells|calibrate: thin glue over dpdrng::study.
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <thread>
@@ -7,7 +8,9 @@
 #include "dpdrng/cli/checked.hpp"
 #include "dpdrng/cli/registry.hpp"
 #include "dpdrng/common/error.hpp"
+#include "dpdrng/common/numbers.hpp"
 #include "dpdrng/common/output.hpp"
+#include "dpdrng/study/calibrate.hpp"
 #include "dpdrng/study/measure.hpp"
 #include "dpdrng/study/report.hpp"
 #include "dpdrng/study/runner.hpp"
@@ -67,13 +70,65 @@ void merge(const std::vector<std::string>& dirs, const std::string& out_dir) {
             << stored << " of " << enumerate_cells(config).size() << " cells\n";
 }
 
-void report(const std::string& dir, bool charts) {
+struct CalibrateArgs {
+  std::string config, out, replicas, variance = "0.0025,0.005,0.01,0.02", lag1, mean;
+  int null_studies = 100, power_studies = 10, threads = 1;
+  bool json = false, no_charts = false;
+};
+
+std::vector<double> real_list(const std::string& text, const std::string& what) {
+  std::vector<double> out;
+  if (text.empty()) return out;
+  std::string_view rest = text;
+  for (;;) {
+    const std::size_t comma = rest.find(',');
+    out.push_back(parse_real(rest.substr(0, comma), what));
+    if (comma == std::string_view::npos) return out;
+    rest.remove_prefix(comma + 1);
+  }
+}
+
+std::string machine_name() {
+  std::ifstream in("/proc/cpuinfo");
+  for (std::string line; std::getline(in, line);)
+    if (line.starts_with("model name")) {
+      const std::size_t colon = line.find(':');
+      if (colon != std::string::npos) return line.substr(colon + 2);
+    }
+  return "unknown CPU";
+}
+
+void calibrate_cmd(const CalibrateArgs& a) {
+  const StudyConfig config = load_config(a.config);
+  CalibrationPlan plan;
+  plan.null_studies = a.null_studies;
+  plan.power_studies = a.power_studies;
+  if (!a.replicas.empty()) plan.replicas = parse_list<int>(a.replicas, "--replicas", {2, 1000});
+  plan.variance = real_list(a.variance, "--variance");
+  plan.lag1 = real_list(a.lag1, "--lag1");
+  plan.mean = real_list(a.mean, "--mean");
+  const StudyConfig pool = calibration_pool(config, plan);  // every input checked before anything is written
+  validate_scene(pool);
+  const fs::path out(a.out);
+  prepare_output_directory(out, "--out");
+  Store store(out / "pool");
+  Calibration c = calibrate(config, plan, store, measure_cell, a.threads, &std::cerr);
+  c.machine = machine_name() + ", " + std::to_string(std::thread::hardware_concurrency()) + " cores";
+  write_calibration(c, out, !a.no_charts, &std::cerr);
+  if (a.json)
+    std::cout << to_json(c).dump(2) << "\n";
+  else
+    std::cout << (out / "summary.md").string() << "\n";
+}
+
+void report(const std::string& dir, bool charts, const std::string& calibration) {
   Store store(dir);
   const StudyConfig config = store.stored_config();
   prepare_output_directory(store.dir() / "report", "study report: the report directory");
   if (fs::exists(store.dir() / "cells")) store.assemble(config);
   ReportOptions o;
   o.charts = charts;
+  o.calibration = calibration;
   o.log = &std::cerr;
   std::vector<UnreadableCell> unreadable;
   const auto cells = store.load_all(&unreadable);
@@ -113,7 +168,32 @@ const bool registered = register_command(60, [](CLI::App& root) {
   CLI::App* p = g.add_subcommand("report", "write DIR/report/: report.md, CSV tables, SVG/PNG charts");
   p->add_option("dir", *dir, "results directory")->required();
   p->add_flag("--no-charts", *no_charts, "skip gnuplot");
-  p->callback([dir, no_charts] { report(*dir, !*no_charts); });
+  auto calibration = std::make_shared<std::string>();
+  p->add_option("--calibration", *calibration,
+                "calibration.json (or a directory of them) for the detection limit; default DIR/../calibration")
+      ->check(non_empty_path());
+  p->callback([dir, no_charts, calibration] { report(*dir, !*no_charts, *calibration); });
+
+  auto ca = std::make_shared<CalibrateArgs>();
+  CLI::App* k = g.add_subcommand("calibrate", "measure the verdicts' false-alarm rate and their power against injected defects");
+  k->footer("Runs null studies (MT19937 against philox4x32(10), threefry2x64(20), splitmix64) and power studies\n"
+            "(plus one defect:variance=E / lag1=R / mean=M generator) on the config's scene, tests and error\n"
+            "control, one cell at a time; resumes from OUT/pool. Writes OUT/summary.md, calibration.json,\n"
+            "false_alarms.csv, power.csv and charts/. A study report reads the detection limit from a\n"
+            "calibration.json whose scene and tests match its config. See study/README.md.");
+  k->add_option("config", ca->config, "study config (TOML), e.g. study/ci.toml")->required();
+  k->add_option("--out,-o", ca->out, "output directory (its pool/ holds the cells)")->required()->check(non_empty_path());
+  add_integer(*k, "--null-studies", ca->null_studies, "null studies at the config's replica count", {1, 100000});
+  add_integer(*k, "--power-studies", ca->power_studies,
+              "power studies per defect size at the largest replica count (more at smaller counts)", {1, 100000});
+  k->add_option("--replicas", ca->replicas, "replica counts to calibrate, e.g. 4,8,16 (the config's is always added)");
+  k->add_option("--variance", ca->variance, "variance defects ε, comma-separated ('' for none)")->capture_default_str();
+  k->add_option("--lag1", ca->lag1, "lag-1 correlation defects ρ (run in pair-step seeding)");
+  k->add_option("--mean", ca->mean, "mean-shift defects μ");
+  add_integer(*k, "--threads,-t", ca->threads, "threads inside each cell (cells run one at a time)", {1, 1024});
+  k->add_flag("--json", ca->json, "print calibration.json on standard output");
+  k->add_flag("--no-charts", ca->no_charts, "skip gnuplot");
+  k->callback([ca] { calibrate_cmd(*ca); });
 
   auto cfg = std::make_shared<std::string>();
   auto shard = std::make_shared<std::string>("1/1");

@@ -7,7 +7,8 @@ namespace dpdrng::cli {
 
 void GeneratorOptions::add_to(CLI::App& app) {
   std::string names;
-  for (const auto& g : rng::generator_table()) names += (names.empty() ? "" : ", ") + std::string(g.name);
+  for (const auto& g : rng::generator_table())
+    names += (names.empty() ? "" : ", ") + (g.name == "defect" ? rng::defect_syntax() : std::string(g.name));
   app.add_option("--generator,-g", name, "generator: " + names)->capture_default_str();
   add_integer(app, "--rounds,-r", rounds,
               "round count (omitted: the generator's default; tea32/tea64: 1..64; see `dpdrng list`)", {1, kIntMax});

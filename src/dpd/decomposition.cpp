@@ -208,6 +208,8 @@ std::unique_ptr<DecomposedForces> make_decomposed_forces(const DecompNoise& nois
   if (!rng::find_generator(spec.name).keyed_hash)
     throw InputError("decompose needs a keyed hash: '" + spec.name +
                      "' is a sequential stream, which cannot give two domains the same number without a message");
+  if (rng::is_defect(spec.name) && rng::parse_defect(spec.name).lag1 != 0)
+    throw InputError("decompose: a lag-1 defect is not supported (it needs the step in every seeding)");
   return rng::with_hash(spec, [&](const auto& gen) -> std::unique_ptr<DecomposedForces> {
     using G = std::decay_t<decltype(gen)>;
     if (noise.distribution == rng::Distribution::gauss)

@@ -45,6 +45,7 @@ std::unique_ptr<PairForces> make_pair_forces(const WaterConfig& in, const DpdKer
   if (g == "philox4x32" || g == "threefry2x64") return detail::make_random123(cfg, kernel, n);
   if (g == "splitmix64") return detail::make_splitmix(cfg, kernel, n);
   if (g == "saru") return detail::make_saru(cfg, kernel, n);
+  if (rng::is_defect(g)) return detail::make_defect(cfg, kernel, n);
   rng::throw_not_keyed_hash(g);
 }
 

@@ -32,6 +32,7 @@ std::unique_ptr<PairForces> make_tea32(const WaterConfig& cfg, const DpdKernel& 
 std::unique_ptr<PairForces> make_tea64(const WaterConfig& cfg, const DpdKernel& kernel, std::size_t n);
 std::unique_ptr<PairForces> make_random123(const WaterConfig& cfg, const DpdKernel& kernel, std::size_t n);
 std::unique_ptr<PairForces> make_splitmix(const WaterConfig& cfg, const DpdKernel& kernel, std::size_t n);
+std::unique_ptr<PairForces> make_defect(const WaterConfig& cfg, const DpdKernel& kernel, std::size_t n);
 std::unique_ptr<PairForces> make_saru(const WaterConfig& cfg, const DpdKernel& kernel, std::size_t n);
 
 }  // namespace dpdrng::dpd::detail

@@ -28,6 +28,10 @@ constexpr std::array kGenerators{
                   "Saru (Worley 2008), HOOMD-blue v2's DPD noise: 1-3 seed words hashed to (LCG, Weyl) state, "
                   "2 outputs per word",
                   true},
+    GeneratorInfo{"defect", 1, 1, 1, "a test article with a known defect, not for production",
+                  "Philox4x32-10 with an injected defect at the level of zeta (variance, lag-1 correlation or "
+                  "mean shift); its words are Philox's. Name: defect:variance=E,lag1=R,mean=M,base=philox4x32",
+                  true},
     GeneratorInfo{"mt19937", 1, 1, 1, "the reference; no round parameter",
                   "MT19937 (32-bit, std::mt19937 = gsl_rng_mt19937); two draws make a 64-bit word, high first",
                   false},
@@ -37,6 +41,10 @@ constexpr std::array kGenerators{
 std::span<const GeneratorInfo> generator_table() { return kGenerators; }
 
 const GeneratorInfo& find_generator(std::string_view name) {
+  if (is_defect(name)) {
+    parse_defect(name);
+    name = "defect";
+  }
   std::string known;
   for (const auto& g : kGenerators) {
     if (g.name == name) return g;
@@ -66,6 +74,11 @@ void throw_not_keyed_hash(std::string_view name) {
 
 void throw_counter_not_pair_seeding() {
   throw InputError("seeding 'counter' makes standalone streams; pair noise needs 'distance' or 'pair-step'");
+}
+
+void check_defect_seeding(const GeneratorSpec& spec, Seeding seeding) {
+  if (is_defect(spec.name) && seeding == Seeding::distance && parse_defect(spec.name).lag1 != 0)
+    throw InputError("'" + spec.name + "': a lag-1 defect correlates a pair's steps; use seeding pair-step");
 }
 
 Seeding parse_seeding(std::string_view name) {

@@ -116,6 +116,16 @@ void map_words(Distribution dist, std::span<const std::uint64_t> words, std::spa
   }
 }
 
+// The defect generator's ζ is not a function of one call's words alone (it reads the previous call too): the
+// scalar draw, call by call.
+void fill_noise_hash(const Defect& g, Distribution dist, std::uint64_t start, std::uint64_t first,
+                     std::span<double> out) {
+  for (std::size_t c = 0; c < out.size(); ++c) {
+    const DefectBlock b = g.stream(start, first + c);
+    out[c] = dist == Distribution::gauss ? draw<Distribution::gauss>(b) : draw<Distribution::uniform>(b);
+  }
+}
+
 template <class G>
 void fill_noise_hash(const G& g, Distribution dist, std::uint64_t start, std::uint64_t first,
                      std::span<double> out) {

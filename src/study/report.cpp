@@ -1,5 +1,6 @@
 // report.md: the tables and charts of one study, with what each verdict rests on.
 #include "dpdrng/study/report.hpp"
+#include "dpdrng/study/calibrate.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -65,7 +66,8 @@ std::string chart_link(const std::string& name, const std::string& alt) {
          ".gp)\n\n";
 }
 
-std::string report_header(const StudyConfig& config, const Analysis& a, const std::vector<CellResult>& cells) {
+std::string report_header(const StudyConfig& config, const Analysis& a, const std::vector<CellResult>& cells,
+                          const std::string& detection_limit) {
   const std::size_t expected = enumerate_cells(config).size();
   std::size_t unstable = 0, failed = 0, disrupted = 0;
   for (const auto& c : cells)
@@ -91,10 +93,17 @@ std::string report_header(const StudyConfig& config, const Analysis& a, const st
        << ", γ = " << s.gamma << ", k_BT = " << s.kT << ", λ = " << s.lambda << ", " << s.steps << " steps ("
        << s.equilibrate << " discarded), pairs: " << s.pairs << "\n";
   md << "- replicas per variant: " << config.replicas << "; reference: " << config.reference << "; α = " << a.alpha
-     << "\n- " << a.error_control_sentence() << "\n- config hash `" << config.hash
+     << "\n- " << a.error_control_sentence() << "\n- " << detection_limit << "\n- config hash `" << config.hash
      << "` (the config is stored in study.h5 and study.toml); generated "
      << when << "\n\n";
   return md.str();
+}
+
+std::string detection_limit(const StudyConfig& config, const fs::path& study_dir, const ReportOptions& options) {
+  if (!options.calibration.empty()) return detection_limit_sentence(config, options.calibration);
+  fs::path study = fs::absolute(study_dir).lexically_normal();
+  if (!study.has_filename()) study = study.parent_path();  // "results/ci/" names the same directory
+  return detection_limit_sentence(config, study.parent_path() / "calibration");
 }
 
 std::string unreadable_cells_markdown(const std::vector<std::string>& files) {
@@ -180,7 +189,8 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
   const auto have = [&](const std::string& n) { return std::find(made.begin(), made.end(), n) != made.end(); };
 
   std::ostringstream md;
-  md << detail::report_header(config, a, cells) << detail::unreadable_cells_markdown(options.unreadable);
+  md << detail::report_header(config, a, cells, detail::detection_limit(config, study_dir, options))
+     << detail::unreadable_cells_markdown(options.unreadable);
 
   md << "## Verdicts\n\n"
      << "Each variant (generator × rounds × distribution and feed × seeding) is compared with MT19937 run with identical "

@@ -8,6 +8,7 @@
 #include "dpdrng/study/analysis.hpp"
 #include "dpdrng/study/cell_result.hpp"
 #include "dpdrng/study/config.hpp"
+#include "dpdrng/study/report.hpp"
 
 namespace dpdrng::study::detail {
 
@@ -18,8 +19,12 @@ std::string cells_csv(const std::vector<CellResult>& cells);                // e
 // The distributions the analysis holds, in the order they first appear: one report section each.
 std::vector<std::string> distributions_of(const Analysis& a);
 std::string chart_link(const std::string& name, const std::string& alt);    // PNG inline, SVG and script linked
-// Title, description, cells stored and broken, scene, replicas and config hash.
-std::string report_header(const StudyConfig& config, const Analysis& a, const std::vector<CellResult>& cells);
+// Title, description, cells stored and broken, scene, replicas, error control, detection limit and config hash.
+std::string report_header(const StudyConfig& config, const Analysis& a, const std::vector<CellResult>& cells,
+                          const std::string& detection_limit);
+// The detection-limit sentence from options.calibration, or from <study dir>/../calibration when not given.
+std::string detection_limit(const StudyConfig& config, const std::filesystem::path& study_dir,
+                            const ReportOptions& options);
 // The "Unstable and failed cells" section, with every cell's notes.
 std::string broken_cells_markdown(const std::vector<CellResult>& cells);
 // The cell files that exist but could not be read (empty when there are none).

@@ -111,6 +111,11 @@ inline double draw(Feed f, const std::array<std::uint64_t, N>& a, const std::arr
   return box_muller(a);
 }
 
+// The defect generator's ζ (defect.hpp), declared here so that every qualified rng::draw<D> finds it.
+struct DefectBlock;
+template <Distribution D>
+double draw(const DefectBlock& b);
+
 Distribution parse_distribution(std::string_view name);  // throws InputError
 std::string_view to_string(Distribution d);
 Feed parse_feed(std::string_view name);  // throws InputError

@@ -5,6 +5,7 @@
 #include <string_view>
 #include <utility>
 
+#include "dpdrng/rng/defect.hpp"
 #include "dpdrng/rng/mt.hpp"
 #include "dpdrng/rng/random123.hpp"
 #include "dpdrng/rng/saru.hpp"
@@ -24,7 +25,8 @@ struct GeneratorInfo {
 };
 
 std::span<const GeneratorInfo> generator_table();
-const GeneratorInfo& find_generator(std::string_view name);  // throws InputError naming the known generators
+// throws InputError naming the known generators; "defect:..." (defect.hpp) is checked and gives the "defect" entry
+const GeneratorInfo& find_generator(std::string_view name);
 
 struct GeneratorSpec {
   std::string name = "tea32";
@@ -38,6 +40,8 @@ std::string describe(const GeneratorSpec& spec);  // e.g. "tea32(1)"
 
 [[noreturn]] void throw_not_keyed_hash(std::string_view name);
 [[noreturn]] void throw_counter_not_pair_seeding();
+// A lag-1 defect needs the step in the hash input: InputError for a lag-1 defect under distance seeding.
+void check_defect_seeding(const GeneratorSpec& spec, Seeding seeding);
 
 namespace detail {
 template <template <int> class G, int R0, int... Rs, class F>
@@ -68,6 +72,12 @@ decltype(auto) with_hash(const GeneratorSpec& s, F&& f) {
   if (s.name == "threefry2x64") return detail::dispatch_rounds<Threefry2x64, 13, 20>(s, std::forward<F>(f));
   if (s.name == "splitmix64") return detail::dispatch_rounds<SplitMix64, 1>(s, std::forward<F>(f));
   if (s.name == "saru") return detail::dispatch_rounds<Saru, 1>(s, std::forward<F>(f));
+  if (is_defect(s.name)) {
+    Defect g;
+    g.key = s.key;
+    g.p = parse_defect(s.name);
+    return f(g);
+  }
   throw_not_keyed_hash(s.name);
 }
 

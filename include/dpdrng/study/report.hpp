@@ -17,6 +17,9 @@ struct ReportOptions {
   bool charts = true;          // run gnuplot (skipped with a note when it is not installed)
   std::ostream* log = nullptr;
   std::vector<std::string> unreadable;  // cell files that could not be read: listed by name in the report
+  // Where the detection limit is read from (calibrate.hpp): a calibration.json or a directory holding them;
+  // empty = the study directory's sibling "calibration" (results/calibration beside results/<study>).
+  std::filesystem::path calibration;
 };
 
 // Returns the path of report.md.

@@ -1,0 +1,88 @@
+#pragma once
+// A generator with a known, injected defect, for measuring what the study's verdicts can detect: a good hash
+// (Philox4x32-10) whose ζ is altered on purpose. With η_t the base's ζ for a pair at step t,
+//   ζ_t = μ + √(1+ε) · (ρ·η_{t−1} + √(1−ρ²)·η_t)
+// so that ⟨ζ⟩ = μ, ⟨ζ²⟩ − μ² = 1 + ε and corr(ζ_t, ζ_{t−1}) = ρ (for η of zero mean and unit variance). It stays
+// a stateless hash: η_{t−1} is the base hash of the same pair at step t − 1, recomputed, not remembered, so the
+// numbers do not depend on the thread count. In counter mode (standalone streams) "step" is the call index.
+//
+// The defect lives at the level of ζ. The words (gen, NIST, χ² of words, the pair taps) are the base's words
+// unchanged: mapping a defective ζ back to words would give a different word-level defect for every
+// distribution, while the word-level tests are meant to judge the hash, and the hash here is Philox4x32-10.
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "dpdrng/rng/distribution.hpp"
+#include "dpdrng/rng/random123.hpp"
+
+namespace dpdrng::rng {
+
+struct DefectParams {
+  double variance = 0;  // ε: ⟨ζ²⟩ − ⟨ζ⟩² = 1 + ε
+  double lag1 = 0;      // ρ: correlation of a pair's ζ at consecutive steps
+  double mean = 0;      // μ: ⟨ζ⟩
+
+  double scale() const { return std::sqrt(1.0 + variance); }
+  double fresh() const { return std::sqrt(1.0 - lag1 * lag1); }
+};
+
+// "defect:variance=0.01,lag1=0.1,mean=0.02,base=philox4x32": keys in any order, each at most once, all optional;
+// base = philox4x32 (10 rounds) is the only base. InputError naming the fault otherwise (ε ≤ −1, |ρ| ≥ 1,
+// a non-finite number, an unknown key).
+inline constexpr std::string_view kDefectPrefix = "defect:";
+bool is_defect(std::string_view name);  // "defect" or "defect:..."
+DefectParams parse_defect(std::string_view name);
+std::string defect_syntax();  // one line for --help and `dpdrng list`
+
+// The base's two words of step t (now) and, when ρ ≠ 0, of step t − 1 (prev), with the parameters that turn
+// them into ζ (draw below). Indexing and iteration give the words of step t: the word-level stream.
+struct DefectBlock {
+  std::array<std::uint64_t, 2> now{}, prev{};
+  DefectParams p;
+
+  std::uint64_t operator[](std::size_t w) const { return now[w]; }
+  auto begin() const { return now.begin(); }
+  auto end() const { return now.end(); }
+  static constexpr std::size_t size() { return 2; }
+};
+
+struct Defect {
+  static constexpr const char* kName = "defect";
+  static constexpr int kWords = 2;
+  using Block = DefectBlock;
+  using Base = Philox4x32<10>;
+
+  Base base;
+  DefectParams p;
+  TeaKey key = kPaperTeaKey;  // the base's key
+  int rounds = 1;
+
+  Block stream(std::uint64_t start, std::uint64_t i) const {
+    return {b().stream(start, i), p.lag1 != 0 ? b().stream(start, i - 1) : Base::Block{}, p};
+  }
+  // Distance seeding has no step, hence no previous step: a lag-1 defect needs pair-step seeding, which
+  // check_defect_seeding (registry.hpp) enforces before a run starts.
+  Block distance(double dx, double dy, double dz) const { return {b().distance(dx, dy, dz), {}, p}; }
+  Block pair_step(std::uint32_t i, std::uint32_t j, std::uint64_t step, std::uint64_t seed) const {
+    return {b().pair_step(i, j, step, seed), p.lag1 != 0 ? b().pair_step(i, j, step - 1, seed) : Base::Block{}, p};
+  }
+
+ private:
+  Base b() const {
+    Base g;
+    g.key = key;
+    return g;
+  }
+};
+
+template <Distribution D>
+inline double draw(const DefectBlock& b) {
+  double eta = draw<D>(b.now);
+  if (b.p.lag1 != 0) eta = b.p.lag1 * draw<D>(b.prev) + b.p.fresh() * eta;
+  return b.p.mean + b.p.scale() * eta;
+}
+
+}  // namespace dpdrng::rng

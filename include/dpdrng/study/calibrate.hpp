@@ -1,0 +1,106 @@
+#pragma once
+// `dpdrng study calibrate CONFIG`: how often the study's verdicts call a good generator "differs" (false-alarm
+// rate) and how large an injected defect must be before they call it so (power), for the config's scene, run
+// length, tests and error control.
+//
+// One pool of replicas serves every question. Replica r (the config's own seeding of replica r) holds the
+// reference, three generators known to be good (philox4x32(10), threefry2x64(20), splitmix64) and, for the
+// first `defect_replicas` replicas, one cell per defect size. A study of R replicas is a block of R consecutive
+// pool replicas, so blocks are disjoint and independent:
+//   null study:  reference + the three good generators, analysed exactly as `study report` does (the config's α
+//                and error control over the whole family): 3 verdicts, each a false alarm when it says "differs";
+//   power study: the same cells plus one defect variant (a study of four variants, like a sweep of four
+//                generators), detected when the defect's verdict says "differs".
+// The reference and good-generator cells are shared by the null and power studies of a block.
+#include <filesystem>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "dpdrng/study/config.hpp"
+#include "dpdrng/study/runner.hpp"
+#include "dpdrng/study/store.hpp"
+
+namespace dpdrng::study {
+
+struct CalibrationPlan {
+  int null_studies = 100;   // null studies at the config's replica count
+  int power_studies = 10;   // power studies per defect size at the largest replica count (more at smaller ones)
+  std::vector<int> replicas;  // replica counts to calibrate; empty = the config's
+  std::vector<double> variance{0.0025, 0.005, 0.01, 0.02};  // ε of defect:variance=ε
+  std::vector<double> lag1, mean;                            // ρ and μ (lag-1 runs in pair-step seeding)
+};
+
+// The config's scene with the pool's generators and replicas, and without NIST cells (the battery reads words,
+// and a defect generator's words are its base's). InputError for the bilayer scene.
+StudyConfig calibration_pool(const StudyConfig& config, const CalibrationPlan& plan);
+// Pool replicas holding defect cells: power_studies × the largest replica count.
+int defect_replicas(const StudyConfig& config, const CalibrationPlan& plan);
+
+struct Rate {
+  std::size_t events = 0, trials = 0;
+  double rate = 0, low = 0, high = 1;  // central 95 % Clopper–Pearson interval
+};
+Rate make_rate(std::size_t events, std::size_t trials);
+
+struct NullRow {
+  int replicas = 0;
+  Rate verdicts;  // good-generator verdicts that say "differs"
+  Rate studies;   // studies with any "differs" (the reference's own tests included)
+};
+
+struct PowerRow {
+  std::string kind;  // "variance", "lag1", "mean"
+  double size = 0;
+  int replicas = 0;
+  Rate detected;
+  double temperature_error = 0;  // mean relative T difference from the reference, replica by replica
+};
+
+// Size of defect detected with probability `power`, linear between the two sizes that bracket it. below: the
+// smallest size tested already reaches it; above: the largest does not (value NaN then).
+struct Threshold {
+  std::string kind;
+  int replicas = 0;
+  double power = 0;
+  double size = 0;
+  bool below = false, above = false;
+};
+
+struct Calibration {
+  std::string config_name;
+  nlohmann::json scene;  // what the calibration holds for: calibration_key(config)
+  double alpha = 0.01;
+  std::string error_control;
+  long steps = 0, production = 0;
+  int config_replicas = 0, pool_replicas = 0, defect_replicas = 0;
+  std::vector<NullRow> nulls;
+  std::vector<PowerRow> power;
+  std::vector<Threshold> thresholds;
+  std::size_t cells = 0, computed = 0, resumed = 0, failed = 0;
+  double seconds = 0;   // wall time of this invocation
+  double cell_seconds = 0;  // summed compute time of every cell in the pool (this and earlier invocations)
+  std::string machine;
+};
+
+// The settings a calibration must share with a study for its numbers to apply: scene, noise distribution and
+// seeding, α, error control and the test sizes behind the verdicts (not the replica count, a row of its own).
+nlohmann::json calibration_key(const StudyConfig& config);
+
+// Computes the pool's missing cells one at a time (each with `threads` threads), saving each to `store`, then
+// analyses. Progress and an ETA on `progress` when given.
+Calibration calibrate(const StudyConfig& config, const CalibrationPlan& plan, Store& store, const MeasureFn& measure,
+                      int threads, std::ostream* progress);
+
+nlohmann::json to_json(const Calibration& c);
+// Writes summary.md, calibration.json, false_alarms.csv, power.csv and charts/ (gnuplot) under dir.
+void write_calibration(const Calibration& c, const std::filesystem::path& dir, bool charts, std::ostream* log);
+
+// The report's detection-limit sentence for `config`, from the calibration.json files under `dir` (each a
+// calibration.json, or a directory of them): the one whose key matches the config and that has a row for its
+// replica count; "not calibrated for this config" otherwise.
+std::string detection_limit_sentence(const StudyConfig& config, const std::filesystem::path& dir);
+
+}  // namespace dpdrng::study

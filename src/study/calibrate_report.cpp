@@ -1,0 +1,270 @@
+// The calibration's outputs (summary.md, calibration.json, CSV, charts) and the detection-limit sentence that
+// every study report reads back from a committed calibration.json.
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "dpdrng/common/output.hpp"
+#include "dpdrng/study/calibrate.hpp"
+#include "report_chart.hpp"
+#include "report_common.hpp"
+
+namespace dpdrng::study {
+namespace fs = std::filesystem;
+
+namespace {
+
+nlohmann::json rate_json(const Rate& r) {
+  return {{"events", r.events}, {"trials", r.trials}, {"rate", r.rate}, {"ci95_low", r.low}, {"ci95_high", r.high}};
+}
+
+Rate rate_from(const nlohmann::json& j) {
+  Rate r;
+  r.events = j.at("events").get<std::size_t>(), r.trials = j.at("trials").get<std::size_t>();
+  r.rate = j.at("rate").is_number() ? j.at("rate").get<double>() : NAN;
+  r.low = j.at("ci95_low").get<double>(), r.high = j.at("ci95_high").get<double>();
+  return r;
+}
+
+std::string pct(double x, const char* f = "%.2f") {
+  if (!std::isfinite(x)) return "–";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, f, 100 * x);
+  return std::string(buf) + " %";
+}
+
+std::string rate_text(const Rate& r) {
+  return std::to_string(r.events) + "/" + std::to_string(r.trials) + " = " + pct(r.rate) + " [" + pct(r.low) + ", " +
+         pct(r.high) + "]";
+}
+
+const char* kind_what(const std::string& kind) {
+  if (kind == "variance") return "ε (⟨ζ²⟩ = 1 + ε)";
+  if (kind == "lag1") return "ρ (lag-1 correlation)";
+  return "μ (mean shift)";
+}
+
+std::string threshold_text(const Threshold& t) {
+  if (t.below) return "≤ " + detail::num(t.size);
+  if (t.above) return "> largest tested";
+  return detail::num(t.size);
+}
+
+// T error per unit of ε, from the variance rows (the DPD thermostat sets kT ∝ σ², so ≈ 1).
+double temperature_per_epsilon(const std::vector<PowerRow>& rows) {
+  double s = 0;
+  std::size_t n = 0;
+  for (const auto& r : rows)
+    if (r.kind == "variance" && r.size != 0 && std::isfinite(r.temperature_error)) s += r.temperature_error / r.size, ++n;
+  return n ? s / double(n) : NAN;
+}
+
+std::string summary_markdown(const Calibration& c) {
+  std::ostringstream md;
+  md << "# Calibration of the study verdicts: " << c.config_name << "\n\n"
+     << "How often the study's verdicts call a good generator \"differs\" (false alarms), and how large an injected "
+        "defect must be before they do (power), for this config's scene and tests: "
+     << c.steps << " steps (" << c.production << " production), α = " << c.alpha << ", error control over the "
+     << c.error_control << ". Made by `dpdrng study calibrate`.\n\n"
+     << "- **Null studies**: the reference (MT19937) and three generators known to be good (philox4x32(10), "
+        "threefry2x64(20), splitmix64), analysed exactly as `study report` analyses a study. Each good generator's "
+        "verdict is a null verdict; a \"differs\" is a false alarm.\n"
+     << "- **Power studies**: the same cells plus one defect generator (`defect:variance=ε` etc.: Philox4x32-10 "
+        "with ζ scaled by √(1+ε), see `dpdrng list`), a study of four variants; detected when the defect's verdict "
+        "says \"differs\".\n"
+     << "- One pool of " << c.pool_replicas << " replicas (the config's seeding of replica r); defect cells on the "
+     << "first " << c.defect_replicas << ". A study of R replicas is a block of R consecutive pool replicas, so the "
+     << "studies of one replica count are disjoint and independent; null and power studies of a block share its "
+        "reference and good-generator cells.\n"
+     << "- Intervals: central 95 % Clopper–Pearson.\n\n";
+  md << "## False alarms\n\n| replicas | null verdicts \"differs\" | studies with any \"differs\" |\n|---|---|---|\n";
+  for (const auto& n : c.nulls)
+    md << "| " << n.replicas << " | " << rate_text(n.verdicts) << " | " << rate_text(n.studies) << " |\n";
+  md << "\nα = " << c.alpha << " bounds the second column's rate under study-wise control (the reference's own "
+     << "tests are in the family too).\n\n";
+  if (!c.power.empty()) {
+    md << "## Power\n\n| defect | size | replicas | detected [95 % CI] | T error (measured) |\n|---|---|---|---|---|\n";
+    for (const auto& p : c.power)
+      md << "| " << p.kind << " | " << detail::num(p.size) << " | " << p.replicas << " | " << rate_text(p.detected)
+         << " | " << pct(p.temperature_error, "%.3f") << " |\n";
+    md << "\n### Size detected with probability 50 % and 90 % (linear between the sizes that bracket it)\n\n"
+       << "| defect | replicas | 50 % | 90 % |\n|---|---|---|---|\n";
+    for (std::size_t k = 0; k + 1 < c.thresholds.size(); k += 2)
+      md << "| " << kind_what(c.thresholds[k].kind) << " | " << c.thresholds[k].replicas << " | "
+         << threshold_text(c.thresholds[k]) << " | " << threshold_text(c.thresholds[k + 1]) << " |\n";
+    md << "\n" << detail::chart_link("power", "power against defect size") << "\n\n" << detail::chart_link("false_alarms", "false-alarm rates") << "\n\n";
+  }
+  md << "## Cost\n\n" << c.cells << " cells (" << c.computed << " computed by the last invocation, " << c.resumed
+     << " resumed, " << c.failed << " failed); wall time of the last invocation " << detail::num(c.seconds)
+     << " s; compute time of all cells " << detail::num(c.cell_seconds) << " s, one cell at a time on one core; "
+     << "machine: " << c.machine << ".\n";
+  return md.str();
+}
+
+std::string false_alarms_csv(const Calibration& c) {
+  std::ostringstream o;
+  o << "replicas,null_verdicts,false_differs,rate,ci95_low,ci95_high,studies,studies_with_differs,study_rate,"
+       "study_ci95_low,study_ci95_high\n";
+  for (const auto& n : c.nulls)
+    o << n.replicas << ',' << n.verdicts.trials << ',' << n.verdicts.events << ',' << n.verdicts.rate << ','
+      << n.verdicts.low << ',' << n.verdicts.high << ',' << n.studies.trials << ',' << n.studies.events << ','
+      << n.studies.rate << ',' << n.studies.low << ',' << n.studies.high << '\n';
+  return o.str();
+}
+
+std::string power_csv(const Calibration& c) {
+  std::ostringstream o;
+  o << "kind,size,replicas,studies,detected,power,ci95_low,ci95_high,temperature_error\n";
+  for (const auto& p : c.power)
+    o << p.kind << ',' << p.size << ',' << p.replicas << ',' << p.detected.trials << ',' << p.detected.events << ','
+      << p.detected.rate << ',' << p.detected.low << ',' << p.detected.high << ',' << p.temperature_error << '\n';
+  return o.str();
+}
+
+void power_chart(const Calibration& c, const fs::path& dir, bool run, std::ostream* log) {
+  const std::string kind = c.power.empty() ? "" : c.power.front().kind;
+  detail::Chart ch;
+  ch.name = "power";
+  ch.title = "Detection probability of a " + kind + " defect (" + c.config_name + ", α = " + detail::num(c.alpha) + ")";
+  ch.xlabel = kind_what(kind);
+  ch.ylabel = "P(verdict \"differs\")";
+  ch.extra = "set logscale x\nset yrange [0:1.05]\n";
+  double lo = INFINITY, hi = -INFINITY;
+  std::map<int, detail::Line> lines;
+  for (const auto& p : c.power) {
+    if (p.kind != kind || p.size <= 0) continue;
+    detail::Line& l = lines[p.replicas];
+    l.title = std::to_string(p.replicas) + " replicas";
+    l.style = "using 1:2:3:4 with yerrorlines lw 2";
+    l.rows.push_back({p.size, p.detected.rate, p.detected.low, p.detected.high});
+    lo = std::min(lo, p.size), hi = std::max(hi, p.size);
+  }
+  for (auto& [r, l] : lines) ch.lines.push_back(l);
+  if (ch.lines.empty()) return;
+  for (double level : {0.5, 0.9})
+    ch.lines.push_back({detail::num(100 * level) + " %", "using 1:2 with lines dt 2 lc rgb 'gray40'",
+                        {{lo, level}, {hi, level}}, {}});
+  detail::render(ch, dir, run, log);
+}
+
+void false_alarm_chart(const Calibration& c, const fs::path& dir, bool run, std::ostream* log) {
+  detail::Chart ch;
+  ch.name = "false_alarms";
+  ch.title = "False alarms of good generators (" + c.config_name + ")";
+  ch.xlabel = "replicas";
+  ch.ylabel = "rate";
+  ch.extra = "set xrange [0:*]\nset yrange [0:*]\n";
+  detail::Line v{"null verdicts \"differs\"", "using 1:2:3:4 with yerrorbars pt 7 ps 1.2", {}, {}};
+  detail::Line s{"studies with any \"differs\"", "using 1:2:3:4 with yerrorbars pt 5 ps 1.2", {}, {}};
+  double hi = 0;
+  for (const auto& n : c.nulls) {
+    v.rows.push_back({double(n.replicas) - 0.15, n.verdicts.rate, n.verdicts.low, n.verdicts.high});
+    s.rows.push_back({double(n.replicas) + 0.15, n.studies.rate, n.studies.low, n.studies.high});
+    hi = std::max(hi, double(n.replicas) + 1);
+  }
+  ch.lines = {v, s, {"α", "using 1:2 with lines dt 2 lc rgb 'red'", {{0, c.alpha}, {hi, c.alpha}}, {}}};
+  detail::render(ch, dir, run, log);
+}
+
+std::vector<fs::path> calibration_files(const fs::path& dir) {
+  std::vector<fs::path> out;
+  std::error_code ec;
+  if (fs::is_regular_file(dir, ec)) return {dir};
+  if (!fs::is_directory(dir, ec)) return out;
+  for (const auto& e : fs::recursive_directory_iterator(dir, ec))
+    if (e.is_regular_file() && e.path().filename() == "calibration.json") out.push_back(e.path());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace
+
+nlohmann::json to_json(const Calibration& c) {
+  nlohmann::json nulls = nlohmann::json::array(), power = nlohmann::json::array(), th = nlohmann::json::array();
+  for (const auto& n : c.nulls)
+    nulls.push_back({{"replicas", n.replicas}, {"verdicts", rate_json(n.verdicts)}, {"studies", rate_json(n.studies)}});
+  for (const auto& p : c.power)
+    power.push_back({{"kind", p.kind}, {"size", p.size}, {"replicas", p.replicas},
+                     {"detected", rate_json(p.detected)}, {"temperature_error", p.temperature_error}});
+  for (const auto& t : c.thresholds)
+    th.push_back({{"kind", t.kind}, {"replicas", t.replicas}, {"power", t.power},
+                  {"size", std::isfinite(t.size) ? nlohmann::json(t.size) : nlohmann::json()},
+                  {"below_smallest", t.below}, {"above_largest", t.above}});
+  return {{"config", c.config_name},     {"key", c.scene},
+          {"alpha", c.alpha},            {"error_control", c.error_control},
+          {"steps", c.steps},            {"production_steps", c.production},
+          {"config_replicas", c.config_replicas},
+          {"pool_replicas", c.pool_replicas}, {"defect_replicas", c.defect_replicas},
+          {"false_alarms", nulls},       {"power", power},
+          {"thresholds", th},            {"cells", c.cells},
+          {"computed", c.computed},      {"resumed", c.resumed},
+          {"failed", c.failed},          {"wall_seconds", c.seconds},
+          {"cell_seconds", c.cell_seconds}, {"machine", c.machine}};
+}
+
+void write_calibration(const Calibration& c, const fs::path& dir, bool charts, std::ostream* log) {
+  fs::create_directories(dir);
+  write_text_file(dir / "calibration.json", to_json(c).dump(2) + "\n");
+  write_text_file(dir / "false_alarms.csv", false_alarms_csv(c));
+  write_text_file(dir / "power.csv", power_csv(c));
+  write_text_file(dir / "summary.md", summary_markdown(c));
+  if (!charts) return;
+  const bool run = detail::has_gnuplot();
+  if (!run && log) *log << "[calibrate] gnuplot not found: chart scripts written, not rendered\n";
+  power_chart(c, dir / "charts", run, log);
+  false_alarm_chart(c, dir / "charts", run, log);
+}
+
+std::string detection_limit_sentence(const StudyConfig& config, const fs::path& dir) {
+  const std::string none = "Detection limit: not calibrated for this config (no `dpdrng study calibrate` result "
+                           "with its scene, run length, tests and replica count).";
+  if (config.scene.is_bilayer()) return none;
+  const nlohmann::json key = calibration_key(config);
+  for (const auto& file : calibration_files(dir)) {
+    nlohmann::json j;
+    try {
+      std::ifstream in(file);
+      j = nlohmann::json::parse(in);
+      if (j.at("key") != key) continue;
+      const auto number = [](const nlohmann::json& x) { return x.is_number() ? x.get<double>() : NAN; };
+      std::vector<Threshold> ts;
+      for (const auto& t : j.at("thresholds"))
+        ts.push_back({t.at("kind").get<std::string>(), t.at("replicas").get<int>(), t.at("power").get<double>(),
+                      number(t.at("size")), t.at("below_smallest").get<bool>(), t.at("above_largest").get<bool>()});
+      const Threshold* t90 = nullptr;
+      for (const auto& t : ts)
+        if (t.kind == "variance" && t.replicas == config.replicas && t.power == 0.9) t90 = &t;
+      std::vector<NullRow> nulls;
+      for (const auto& n : j.at("false_alarms"))
+        nulls.push_back({n.at("replicas").get<int>(), rate_from(n.at("verdicts")), rate_from(n.at("studies"))});
+      const NullRow* null = nullptr;
+      for (const auto& n : nulls)
+        if (n.replicas == config.replicas) null = &n;
+      if (!t90 || !null) continue;
+      std::vector<PowerRow> rows;
+      for (const auto& p : j.at("power"))
+        rows.push_back({p.at("kind").get<std::string>(), p.at("size").get<double>(), p.at("replicas").get<int>(),
+                        rate_from(p.at("detected")), number(p.at("temperature_error"))});
+      const double t_per_eps = temperature_per_epsilon(rows);
+      std::ostringstream s;
+      s << "Detection limit (from " << file.filename().string() << " in " << file.parent_path().filename().string()
+        << "): with " << config.replicas << " replicas of " << config.scene.steps << " steps, ";
+      if (t90->above)
+        s << "no ⟨ζ²⟩ error up to the largest calibrated is detected 90 % of the time";
+      else
+        s << "a ⟨ζ²⟩ error of " << (t90->below ? "≤ " : "") << pct(t90->size, "%.2g") << " (temperature error ≈ "
+          << pct(t90->size * t_per_eps, "%.2g") << ") is detected 90 % of the time";
+      s << "; false alarms per study ≤ " << pct(null->studies.high, "%.2g") << " (95 % upper bound; "
+        << null->studies.events << " of " << null->studies.trials << " null studies had one).";
+      return s.str();
+    } catch (const std::exception&) {
+      continue;  // not a calibration file of this layout: another may match
+    }
+  }
+  return none;
+}
+
+}  // namespace dpdrng::study

@@ -1,0 +1,143 @@
+// The defect generator: its name's grammar, that a zero defect is its base bit for bit, and that the injected
+// defect has the size asked for, measured on large samples. Each tolerance is 6 standard errors of the
+// estimate (derived at the test), so a correct implementation sits far inside it.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "dpdrng/common/error.hpp"
+#include "dpdrng/rng/registry.hpp"
+#include "dpdrng/rng/stream.hpp"
+
+using namespace dpdrng;
+using namespace dpdrng::rng;
+
+namespace {
+
+constexpr std::size_t kN = std::size_t{1} << 21;
+
+std::vector<double> zetas(const std::string& name, Distribution dist, std::uint64_t start = 11) {
+  std::vector<double> z(kN);
+  fill_noise(validated({name, 0}), dist, start, 0, z);
+  return z;
+}
+
+double mean(const std::vector<double>& x) {
+  double s = 0;
+  for (double v : x) s += v;
+  return s / double(x.size());
+}
+
+// Sample variance about the sample mean, and the lag-k correlation coefficient.
+double variance(const std::vector<double>& x) {
+  const double m = mean(x);
+  double s = 0;
+  for (double v : x) s += (v - m) * (v - m);
+  return s / double(x.size() - 1);
+}
+double lag_corr(const std::vector<double>& x, std::size_t k) {
+  const double m = mean(x), var = variance(x);
+  double s = 0;
+  for (std::size_t i = 0; i + k < x.size(); ++i) s += (x[i] - m) * (x[i + k] - m);
+  return s / double(x.size() - k) / var;
+}
+
+}  // namespace
+
+TEST(Defect, ParsesItsName) {
+  const DefectParams p = parse_defect("defect:variance=0.01,lag1=-0.25,mean=0.5,base=philox4x32");
+  EXPECT_EQ(p.variance, 0.01);
+  EXPECT_EQ(p.lag1, -0.25);
+  EXPECT_EQ(p.mean, 0.5);
+  EXPECT_EQ(parse_defect("defect:mean=-1e-3").mean, -1e-3);
+  EXPECT_EQ(parse_defect("defect").variance, 0.0);
+  EXPECT_EQ(find_generator("defect:lag1=0.5").name, "defect");
+  EXPECT_EQ(describe(validated({"defect:variance=0.02", 0})), "defect:variance=0.02");
+}
+
+TEST(Defect, RefusesMalformedNames) {
+  for (const char* bad : {"defect:", "defect:variance", "defect:variance=", "defect:variance=-1",
+                          "defect:variance=nan", "defect:lag1=1", "defect:lag1=-1.5", "defect:mean=inf",
+                          "defect:base=tea32", "defect:colour=red", "defect:variance=0.1,variance=0.2",
+                          "defect:variance=0.1,", "defect:variance=0x10"})
+    EXPECT_THROW(validated({bad, 0}), InputError) << bad;
+  // A lag-1 defect needs the step in the hash input.
+  EXPECT_THROW(check_defect_seeding(validated({"defect:lag1=0.1", 0}), Seeding::distance), InputError);
+  EXPECT_NO_THROW(check_defect_seeding(validated({"defect:lag1=0.1", 0}), Seeding::pair_step));
+  EXPECT_NO_THROW(check_defect_seeding(validated({"defect:variance=0.1", 0}), Seeding::distance));
+}
+
+// No defect: the base's numbers, bit for bit, in every seeding and in counter streams; with a defect the words
+// stay the base's (the word-level stream) while ζ changes.
+TEST(Defect, ZeroDefectIsPhilox10) {
+  Defect d;
+  Philox4x32<10> base;
+  const PairInput p{3, 17, 0.37, -0.61, 0.05, 1234};
+  for (std::uint64_t step : {0ull, 1ull, 99ull}) {
+    PairInput q = p;
+    q.step = step;
+    const auto a = pair_block<Seeding::pair_step>(d, q, 42), b = pair_block<Seeding::pair_step>(base, q, 42);
+    EXPECT_EQ(a.now, b);
+    EXPECT_EQ(draw<Distribution::gauss>(a), draw<Distribution::gauss>(b));
+    EXPECT_EQ(draw<Distribution::uniform>(a), draw<Distribution::uniform>(b));
+  }
+  EXPECT_EQ(draw<Distribution::gauss>(d.distance(0.3, 0.2, 0.1)), draw<Distribution::gauss>(base.distance(0.3, 0.2, 0.1)));
+  std::vector<std::uint64_t> wd(1000), wb(1000);
+  fill_stream(validated({"defect:variance=0.5,lag1=0.3,mean=1", 0}), 5, 3, wd);
+  fill_stream(validated({"philox4x32", 10}), 5, 3, wb);
+  EXPECT_EQ(wd, wb);
+  EXPECT_EQ(zetas("defect", Distribution::gauss), zetas("philox4x32", Distribution::gauss));
+}
+
+// ⟨ζ²⟩ − ⟨ζ⟩² = 1 + ε. The sample variance of n Gaussians of variance s² has standard error s²·√(2/n); for the
+// unit-variance uniform it is s²·√((9/5 − 1)/n) (fourth moment 9/5), smaller. 6 SE: 6·1.2·√(2/2^21) ≈ 0.0070,
+// far below the ε = 0.05 tested and far above the estimate's spread.
+TEST(Defect, VarianceIsOnePlusEpsilon) {
+  for (Distribution dist : {Distribution::gauss, Distribution::uniform}) {
+    for (double eps : {0.05, -0.05}) {
+      const auto z = zetas("defect:variance=" + std::to_string(eps), dist);
+      const double se = (1 + eps) * std::sqrt(2.0 / double(kN));
+      EXPECT_NEAR(variance(z), 1 + eps, 6 * se) << to_string(dist) << " ε=" << eps;
+      EXPECT_NEAR(mean(z), 0.0, 6 * std::sqrt((1 + eps) / double(kN)));
+    }
+  }
+}
+
+// ⟨ζ⟩ = μ with the variance left at 1: SE of the mean 1/√n.
+TEST(Defect, MeanIsMu) {
+  for (Distribution dist : {Distribution::gauss, Distribution::uniform}) {
+    const auto z = zetas("defect:mean=0.02", dist);
+    EXPECT_NEAR(mean(z), 0.02, 6 / std::sqrt(double(kN))) << to_string(dist);
+    EXPECT_NEAR(variance(z), 1.0, 6 * std::sqrt(2.0 / double(kN)));
+  }
+}
+
+// corr(ζ_t, ζ_{t−1}) = ρ, ⟨ζ²⟩ stays 1, and steps two apart are independent (ζ_t and ζ_{t−2} share no η). The
+// lag-k sample correlation has standard error ≈ √((1 + 2ρ²)/n) for this MA(1) process (Bartlett); 6 SE ≈ 0.006.
+TEST(Defect, Lag1CorrelationIsRho) {
+  for (Distribution dist : {Distribution::gauss, Distribution::uniform})
+    for (double rho : {0.2, -0.4}) {
+      const auto z = zetas("defect:lag1=" + std::to_string(rho), dist);
+      const double se = std::sqrt((1 + 2 * rho * rho) / double(kN));
+      EXPECT_NEAR(lag_corr(z, 1), rho, 6 * se) << to_string(dist) << " ρ=" << rho;
+      EXPECT_NEAR(lag_corr(z, 2), 0.0, 6 * se);
+      EXPECT_NEAR(variance(z), 1.0, 6 * std::sqrt(2.0 / double(kN)));
+    }
+}
+
+// The same in pair-step seeding, along the steps of one pair, as the DPD pair loop draws it.
+TEST(Defect, Lag1AlongAPairsSteps) {
+  const GeneratorSpec spec = validated({"defect:lag1=0.3,variance=0.1", 0});
+  std::vector<double> z;
+  z.reserve(kN);
+  with_pair_noise(spec, Seeding::pair_step, Distribution::gauss, 9, [&](const auto& pn) {
+    for (std::uint32_t pair = 0; pair < 64; ++pair)
+      for (std::uint64_t step = 0; step < kN / 64; ++step) z.push_back(pn(PairInput{pair, pair + 100, 0, 0, 0, step}));
+    return 0;
+  });
+  // Correlations across the joins between pairs (63 of 2^21 products) shift the estimate by < 1e-4.
+  const double se = std::sqrt((1 + 2 * 0.09) / double(kN));
+  EXPECT_NEAR(lag_corr(z, 1), 0.3, 6 * se);
+  EXPECT_NEAR(variance(z), 1.1, 6 * 1.1 * std::sqrt(2.0 / double(kN)));
+}

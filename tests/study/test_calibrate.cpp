@@ -1,0 +1,159 @@
+// study calibrate through a fake measure: the pool it computes, the counts behind the false-alarm and power
+// rows, that it resumes, and that a report finds the detection limit of a matching calibration only.
+#include <gtest/gtest.h>
+#include <stdlib.h>
+
+#include <filesystem>
+
+#include "dpdrng/common/error.hpp"
+#include "dpdrng/rng/registry.hpp"
+#include "dpdrng/stats/binomial.hpp"
+#include "dpdrng/study/calibrate.hpp"
+#include "fake_measure.hpp"
+
+using namespace dpdrng;
+using namespace dpdrng::study;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    std::string tmpl = (fs::temp_directory_path() / "dpdrng-calib-XXXXXX").string();
+    path = mkdtemp(tmpl.data());
+  }
+  ~TempDir() { fs::remove_all(path); }
+};
+
+// The fake engine with the physics of a variance defect: the thermostat's kT scales with σ², so T with 1 + ε.
+struct DefectAwareFake {
+  fake::FakeMeasure m;
+  int calls = 0;
+  CellResult operator()(const Cell& c, const StudyConfig& cfg, int t) {
+    ++calls;
+    CellResult r = m(c, cfg, t);
+    if (rng::is_defect(c.generator)) r.scalars["temperature_mean"] *= 1 + rng::parse_defect(c.generator).variance;
+    return r;
+  }
+};
+
+CalibrationPlan small_plan() {
+  CalibrationPlan p;
+  p.null_studies = 20;
+  p.power_studies = 3;
+  p.replicas = {4};
+  p.variance = {0.0001, 0.003, 0.01};
+  return p;
+}
+
+}  // namespace
+
+TEST(Calibrate, PoolCountsAndRates) {
+  TempDir tmp;
+  const StudyConfig cfg = parse_config(fake::small_config_toml("calib-test", 3), "c.toml");
+  const CalibrationPlan plan = small_plan();
+  DefectAwareFake fake;
+  MeasureFn fn = [&](const Cell& c, const StudyConfig& s, int t) { return fake(c, s, t); };
+  Store store(tmp.path / "pool");
+  const Calibration c = calibrate(cfg, plan, store, fn, 1, nullptr);
+
+  // Pool: 20 null studies of 3 replicas = 60 replicas of reference + 3 good generators; defects on 3 × 4 = 12.
+  EXPECT_EQ(c.pool_replicas, 60);
+  EXPECT_EQ(c.defect_replicas, 12);
+  EXPECT_EQ(fake.calls, 60 * 4 + 12 * 3);
+  EXPECT_EQ(c.computed, std::size_t(fake.calls));
+
+  // Null rows for 3 (the config's) and 4 replicas: 60 / R disjoint studies of 3 verdicts each.
+  ASSERT_EQ(c.nulls.size(), 2u);
+  EXPECT_EQ(c.nulls[0].replicas, 3);
+  EXPECT_EQ(c.nulls[0].studies.trials, 20u);
+  EXPECT_EQ(c.nulls[0].verdicts.trials, 60u);
+  EXPECT_EQ(c.nulls[1].studies.trials, 15u);
+  EXPECT_LE(c.nulls[0].verdicts.events, c.nulls[0].verdicts.trials);
+  const auto [lo, hi] = stats::clopper_pearson(c.nulls[0].verdicts.events, 60, 0.95);
+  EXPECT_EQ(c.nulls[0].verdicts.low, lo);
+  EXPECT_EQ(c.nulls[0].verdicts.high, hi);
+
+  // Power rows: 3 sizes × {3, 4} replicas, 12 / R studies each. A 1 % temperature shift is 10 times the fake's
+  // replica spread (0.003 / √12 ≈ 0.0009 on 1.03): every study sees it; a 0.01 % shift is a tenth of it.
+  ASSERT_EQ(c.power.size(), 6u);
+  for (const auto& p : c.power) {
+    EXPECT_EQ(p.detected.trials, std::size_t(12 / p.replicas)) << p.size;
+    if (p.size == 0.01) EXPECT_EQ(p.detected.events, p.detected.trials);
+    if (p.size == 0.0001) EXPECT_LT(p.detected.events, p.detected.trials);
+    // The measured T error is ε plus the difference of two replica noises (spread ≈ 0.0009 / 1.03 each).
+    EXPECT_NEAR(p.temperature_error, p.size, 0.0015) << p.size;
+  }
+  // The 90 % size of every replica count lies within the sizes tested, or at the smallest.
+  for (const auto& t : c.thresholds) {
+    EXPECT_FALSE(t.above) << t.replicas;
+    EXPECT_LE(t.size, 0.01);
+  }
+}
+
+TEST(Calibrate, ResumesWithoutRecomputing) {
+  TempDir tmp;
+  const StudyConfig cfg = parse_config(fake::small_config_toml("calib-resume", 3), "c.toml");
+  CalibrationPlan plan = small_plan();
+  plan.null_studies = 4;
+  DefectAwareFake first, second;
+  Store store(tmp.path / "pool");
+  const Calibration a = calibrate(cfg, plan, store, [&](const Cell& c, const StudyConfig& s, int t) { return first(c, s, t); }, 1, nullptr);
+  const Calibration b = calibrate(cfg, plan, store, [&](const Cell& c, const StudyConfig& s, int t) { return second(c, s, t); }, 1, nullptr);
+  EXPECT_GT(first.calls, 0);
+  EXPECT_EQ(second.calls, 0);
+  EXPECT_EQ(b.resumed, b.cells);
+  nlohmann::json ja = to_json(a), jb = to_json(b);
+  for (const char* k : {"computed", "resumed", "wall_seconds"}) ja.erase(k), jb.erase(k);
+  EXPECT_EQ(ja, jb);
+  // Another plan is another pool: the store refuses it rather than mixing cells.
+  plan.variance = {0.5};
+  EXPECT_THROW(calibrate(cfg, plan, store, [&](const Cell& c, const StudyConfig& s, int t) { return second(c, s, t); }, 1, nullptr),
+               InputError);
+}
+
+TEST(Calibrate, ReportReadsAMatchingCalibrationOnly) {
+  TempDir tmp;
+  const StudyConfig cfg = parse_config(fake::small_config_toml("calib-report", 3), "c.toml");
+  CalibrationPlan plan = small_plan();
+  plan.null_studies = 4;
+  DefectAwareFake fake;
+  Store store(tmp.path / "pool");
+  const Calibration c = calibrate(cfg, plan, store, [&](const Cell& x, const StudyConfig& s, int t) { return fake(x, s, t); }, 1, nullptr);
+  write_calibration(c, tmp.path, false, nullptr);
+  for (const char* f : {"summary.md", "calibration.json", "power.csv", "false_alarms.csv"})
+    EXPECT_TRUE(fs::exists(tmp.path / f)) << f;
+
+  const std::string s = detection_limit_sentence(cfg, tmp.path);
+  EXPECT_NE(s.find("with 3 replicas of 20 steps"), std::string::npos) << s;
+  EXPECT_NE(s.find("detected 90 % of the time"), std::string::npos) << s;
+  EXPECT_NE(s.find("false alarms per study ≤"), std::string::npos) << s;
+  // A different run length, a replica count without a row, or no calibration at all: not calibrated.
+  StudyConfig longer = cfg;
+  longer.scene.steps = 40;
+  StudyConfig more = cfg;
+  more.replicas = 5;
+  for (const auto& other : {longer, more})
+    EXPECT_NE(detection_limit_sentence(other, tmp.path).find("not calibrated for this config"), std::string::npos);
+  EXPECT_NE(detection_limit_sentence(cfg, tmp.path / "nowhere").find("not calibrated"), std::string::npos);
+}
+
+TEST(Calibrate, RefusesBadPlans) {
+  const StudyConfig cfg = parse_config(fake::small_config_toml("calib-bad", 3), "c.toml");
+  CalibrationPlan plan = small_plan();
+  plan.replicas = {1};
+  EXPECT_THROW(calibration_pool(cfg, plan), InputError);
+  plan = small_plan();
+  plan.variance = {-1.0};
+  EXPECT_THROW(calibration_pool(cfg, plan), InputError);
+  plan = small_plan();
+  plan.lag1 = {1.0};
+  EXPECT_THROW(calibration_pool(cfg, plan), InputError);
+  // A lag-1 defect runs in pair-step seeding whatever the config's seeding.
+  plan = small_plan();
+  plan.lag1 = {0.1};
+  const StudyConfig pool = calibration_pool(cfg, plan);
+  EXPECT_EQ(pool.generators.back().name, "defect:lag1=0.1");
+  EXPECT_EQ(pool.generators.back().seedings, std::vector<std::string>{"pair-step"});
+}
