@@ -60,6 +60,13 @@ double scalar_number(Mode mode, const std::array<std::uint64_t, N>& b) {
   return rng::inverse_normal(rng::to_unit_mid(b[0]));
 }
 
+// The defect generator's numbers carry its injected defect (rng/defect.hpp); its words are the base's.
+double scalar_number(Mode mode, const rng::DefectBlock& b) {
+  if (mode == Mode::scalar_uniform) return rng::draw<rng::Distribution::uniform>(b);
+  if (mode == Mode::scalar_gauss) return rng::draw<rng::Distribution::gauss>(b);
+  return rng::draw<rng::Distribution::gauss>(rng::Feed::inverse, b, b);
+}
+
 const char* mode_name(Mode m) {
   switch (m) {
     case Mode::scalar: return "scalar";

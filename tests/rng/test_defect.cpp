@@ -77,7 +77,8 @@ TEST(Defect, ZeroDefectIsPhilox10) {
   for (std::uint64_t step : {0ull, 1ull, 99ull}) {
     PairInput q = p;
     q.step = step;
-    const auto a = pair_block<Seeding::pair_step>(d, q, 42), b = pair_block<Seeding::pair_step>(base, q, 42);
+    const auto a = pair_block<Seeding::pair_step>(d, q, 42);
+    const auto b = pair_block<Seeding::pair_step>(base, q, 42);
     EXPECT_EQ(a.now, b);
     EXPECT_EQ(draw<Distribution::gauss>(a), draw<Distribution::gauss>(b));
     EXPECT_EQ(draw<Distribution::uniform>(a), draw<Distribution::uniform>(b));

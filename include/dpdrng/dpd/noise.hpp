@@ -9,6 +9,7 @@
 #include <array>
 #include <bit>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "dpdrng/rng/mt.hpp"
@@ -19,7 +20,10 @@ namespace dpdrng::dpd {
 // z[t] = ζ of blocks a[t] (and b[t], read under the blocks feed only) for t < m: one switch, then a plain loop.
 template <rng::Distribution D, class Block>
 inline void feed_zetas(rng::Feed f, const Block* a, const Block* b, double* z, std::size_t m) {
-  if constexpr (D == rng::Distribution::uniform) {
+  if constexpr (std::is_same_v<Block, rng::DefectBlock>) {
+    // The defect generator: the base's ζ under the feed, then the injected defect (defect.hpp).
+    for (std::size_t t = 0; t < m; ++t) z[t] = rng::draw<D>(f, a[t], b[t]);
+  } else if constexpr (D == rng::Distribution::uniform) {
     for (std::size_t t = 0; t < m; ++t) z[t] = rng::uniform_unit_variance(a[t]);
   } else {
     switch (f) {

@@ -85,4 +85,13 @@ inline double draw(const DefectBlock& b) {
   return b.p.mean + b.p.scale() * eta;
 }
 
+// Under a feed chosen at run time: η from the base's blocks through that feed (b is the second block, read only
+// by the blocks feed), then the same defect.
+template <Distribution D>
+inline double draw(Feed f, const DefectBlock& a, const DefectBlock& b) {
+  double eta = draw<D>(f, a.now, b.now);
+  if (a.p.lag1 != 0) eta = a.p.lag1 * draw<D>(f, a.prev, b.prev) + a.p.fresh() * eta;
+  return a.p.mean + a.p.scale() * eta;
+}
+
 }  // namespace dpdrng::rng

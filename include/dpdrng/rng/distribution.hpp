@@ -115,6 +115,8 @@ inline double draw(Feed f, const std::array<std::uint64_t, N>& a, const std::arr
 struct DefectBlock;
 template <Distribution D>
 double draw(const DefectBlock& b);
+template <Distribution D>
+double draw(Feed f, const DefectBlock& a, const DefectBlock& b);
 
 Distribution parse_distribution(std::string_view name);  // throws InputError
 std::string_view to_string(Distribution d);
