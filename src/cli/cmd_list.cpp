@@ -39,8 +39,8 @@ void run_list(bool json) {
     std::printf("%13s %s\n%13s safe: %s\n", "", std::string(g.description).c_str(), "",
                 std::string(g.safe_rounds).c_str());
     if (g.name == "defect")
-      std::printf("%13s name: %s\n%13s zeta = mean + sqrt(1+variance) * (lag1 * eta(t-1) + sqrt(1-lag1^2) * eta(t)),\n"
-                  "%13s eta = Philox4x32-10's zeta; lag1 needs seeding pair-step\n",
+      std::printf("%13s name: %s\n%13s zeta = mean + sqrt(1+variance) * (w * eta(t-1) + sqrt(1-w^2) * eta(t)), w sqrt(1-w^2) = lag1,\n"
+                  "%13s eta = Philox4x32-10's zeta; corr(zeta(t), zeta(t-1)) = lag1; lag1 needs seeding pair-step\n",
                   "", rng::defect_syntax().c_str(), "", "");
   }
 }

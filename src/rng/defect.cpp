@@ -1,5 +1,7 @@
 #include "dpdrng/rng/defect.hpp"
 
+#include <cmath>
+
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/common/numbers.hpp"
 
@@ -8,10 +10,17 @@ namespace dpdrng::rng {
 bool is_defect(std::string_view name) { return name == "defect" || name.starts_with(kDefectPrefix); }
 
 std::string defect_syntax() {
-  return "defect:variance=E,lag1=R,mean=M,base=philox4x32 (each optional; E > -1, |R| < 1, M finite)";
+  return "defect:variance=E,lag1=R,mean=M,base=philox4x32 (each optional; E > -1, |R| <= 1/2, M finite)";
 }
 
 namespace {
+// The weight a of η_{t−1} that gives corr(ζ_t, ζ_{t−1}) = a·√(1−a²) = ρ: a² = (1 − √(1 − 4ρ²))/2, the root
+// with |a| ≤ 1/√2 (the other root swaps the roles of η_{t−1} and η_t), sign of ρ.
+double lag1_weight(double rho) {
+  const double a = std::sqrt((1.0 - std::sqrt(1.0 - 4.0 * rho * rho)) / 2.0);
+  return rho < 0 ? -a : a;
+}
+
 [[noreturn]] void fail(std::string_view name, const std::string& why) {
   throw InputError("generator '" + quote_input(name) + "': " + why + "; expected " + defect_syntax());
 }
@@ -35,7 +44,7 @@ DefectParams parse_defect(std::string_view name) {
     if (key == "variance") {
       k = 0, p.variance = parse_real(value, what, {-1.0, 1e6, true, false});
     } else if (key == "lag1") {
-      k = 1, p.lag1 = parse_real(value, what, {-1.0, 1.0, true, true});
+      k = 1, p.lag1 = lag1_weight(parse_real(value, what, {-0.5, 0.5, false, false}));
     } else if (key == "mean") {
       k = 2, p.mean = parse_real(value, what, {-1e6, 1e6, false, false});
     } else if (key == "base") {

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <map>
 #include <ostream>
 #include <set>
@@ -290,6 +291,12 @@ Calibration calibrate(const StudyConfig& config, const CalibrationPlan& plan, St
       if (q / r > 0) out.power.push_back(power_row(pool, cells, d, r, q / r));
   out.thresholds = thresholds(out.power);
   out.seconds = std::chrono::duration<double>(clock::now() - t0).count();
+  // Wall time summed over every invocation on this pool (a resumed run's share included).
+  const std::filesystem::path wall = store.dir() / "wall_seconds";
+  double before = 0;
+  if (std::ifstream in(wall); in) in >> before;
+  out.wall_total = before + out.seconds;
+  write_file_atomically(wall, std::to_string(out.wall_total) + "\n");
   return out;
 }
 

@@ -48,9 +48,9 @@ const char* kind_what(const std::string& kind) {
 }
 
 std::string threshold_text(const Threshold& t) {
-  if (t.below) return "≤ " + detail::num(t.size);
+  if (t.below) return "≤ " + detail::fmt("%.3g", t.size) + " (the smallest tested)";
   if (t.above) return "> largest tested";
-  return detail::num(t.size);
+  return detail::fmt("%.3g", t.size);
 }
 
 // T error per unit of ε, from the variance rows (the DPD thermostat sets kT ∝ σ², so ≈ 1).
@@ -98,8 +98,10 @@ std::string summary_markdown(const Calibration& c) {
     md << "\n" << detail::chart_link("power", "power against defect size") << "\n\n" << detail::chart_link("false_alarms", "false-alarm rates") << "\n\n";
   }
   md << "## Cost\n\n" << c.cells << " cells (" << c.computed << " computed by the last invocation, " << c.resumed
-     << " resumed, " << c.failed << " failed); wall time of the last invocation " << detail::num(c.seconds)
-     << " s; compute time of all cells " << detail::num(c.cell_seconds) << " s, one cell at a time on one core; "
+     << " resumed, " << c.failed << " failed); wall time " << detail::fmt("%.0f", c.wall_total)
+     << " s over every invocation on this pool (the last " << detail::fmt("%.0f", c.seconds)
+     << " s); compute time of all cells " << detail::fmt("%.0f", c.cell_seconds)
+     << " s, one cell at a time on one core (`nice`, beside other jobs); "
      << "machine: " << c.machine << ".\n";
   return md.str();
 }
@@ -144,6 +146,7 @@ void power_chart(const Calibration& c, const fs::path& dir, bool run, std::ostre
   }
   for (auto& [r, l] : lines) ch.lines.push_back(l);
   if (ch.lines.empty()) return;
+  ch.extra += "set xrange [" + detail::num(lo / 1.25) + ":" + detail::num(hi * 1.25) + "]\n";
   for (double level : {0.5, 0.9})
     ch.lines.push_back({detail::num(100 * level) + " %", "using 1:2 with lines dt 2 lc rgb 'gray40'",
                         {{lo, level}, {hi, level}}, {}});
@@ -201,7 +204,7 @@ nlohmann::json to_json(const Calibration& c) {
           {"false_alarms", nulls},       {"power", power},
           {"thresholds", th},            {"cells", c.cells},
           {"computed", c.computed},      {"resumed", c.resumed},
-          {"failed", c.failed},          {"wall_seconds", c.seconds},
+          {"failed", c.failed},          {"wall_seconds", c.seconds}, {"wall_seconds_total", c.wall_total},
           {"cell_seconds", c.cell_seconds}, {"machine", c.machine}};
 }
 

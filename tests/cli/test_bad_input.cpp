@@ -211,7 +211,7 @@ TEST(BadInput, StudyCalibrateAndDefectGenerator) {
   const std::string out = scratch(".calib");
   expect_bad("study calibrate " + cfg + " --out " + out + " --variance 0.01,nan", "--variance");
   expect_bad("study calibrate " + cfg + " --out " + out + " --variance -1", "variance");
-  expect_bad("study calibrate " + cfg + " --out " + out + " --lag1 1", "lag1");
+  expect_bad("study calibrate " + cfg + " --out " + out + " --lag1 0.6", "lag1");
   expect_bad("study calibrate " + cfg + " --out " + out + " --replicas 1", "--replicas");
   expect_bad("study calibrate " + cfg + " --out " + out + " --null-studies 0", "--null-studies");
   expect_bad("study calibrate " + cfg, "--out is required");
@@ -219,7 +219,7 @@ TEST(BadInput, StudyCalibrateAndDefectGenerator) {
   expect_bad("gen -g defect:lag1=2 --count 4", "lag1");
   expect_bad("gen -g defect:varience=0.1 --count 4", "unknown key 'varience'");
   expect_bad("gen -g defect:variance=0.1,base=tea32 --count 4", "base 'tea32'");
-  expect_bad("simulate -g defect:lag1=0.2 --steps 2 --particles 64", "pair-step");
+  expect_bad("simulate -g defect:lag1=0.2 --steps 2 --equilibrate 0 --particles 64", "pair-step");
   EXPECT_EQ(run("gen -g defect:variance=0.5 --count 4").out, run("gen -g philox4x32 -r 10 --count 4").out);
 }
 

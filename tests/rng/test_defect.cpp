@@ -48,7 +48,9 @@ double lag_corr(const std::vector<double>& x, std::size_t k) {
 TEST(Defect, ParsesItsName) {
   const DefectParams p = parse_defect("defect:variance=0.01,lag1=-0.25,mean=0.5,base=philox4x32");
   EXPECT_EQ(p.variance, 0.01);
-  EXPECT_EQ(p.lag1, -0.25);
+  EXPECT_NEAR(p.lag1 * p.fresh(), -0.25, 1e-15);  // the weight a of η_{t−1} gives a·√(1−a²) = ρ
+  EXPECT_LT(p.lag1, 0.0);
+  EXPECT_NEAR(parse_defect("defect:lag1=0.5").lag1, std::sqrt(0.5), 1e-8);  // the largest: a = √(1−a²)
   EXPECT_EQ(p.mean, 0.5);
   EXPECT_EQ(parse_defect("defect:mean=-1e-3").mean, -1e-3);
   EXPECT_EQ(parse_defect("defect").variance, 0.0);
@@ -58,7 +60,7 @@ TEST(Defect, ParsesItsName) {
 
 TEST(Defect, RefusesMalformedNames) {
   for (const char* bad : {"defect:", "defect:variance", "defect:variance=", "defect:variance=-1",
-                          "defect:variance=nan", "defect:lag1=1", "defect:lag1=-1.5", "defect:mean=inf",
+                          "defect:variance=nan", "defect:lag1=0.51", "defect:lag1=-1.5", "defect:mean=inf",
                           "defect:base=tea32", "defect:colour=red", "defect:variance=0.1,variance=0.2",
                           "defect:variance=0.1,", "defect:variance=0x10"})
     EXPECT_THROW(validated({bad, 0}), InputError) << bad;
@@ -115,7 +117,7 @@ TEST(Defect, MeanIsMu) {
 }
 
 // corr(ζ_t, ζ_{t−1}) = ρ, ⟨ζ²⟩ stays 1, and steps two apart are independent (ζ_t and ζ_{t−2} share no η). The
-// lag-k sample correlation has standard error ≈ √((1 + 2ρ²)/n) for this MA(1) process (Bartlett); 6 SE ≈ 0.006.
+// lag-k sample correlation has standard error ≤ √((1 + 2ρ²)/n) for this MA(1) process (Bartlett); 6 SE ≈ 0.005.
 TEST(Defect, Lag1CorrelationIsRho) {
   for (Distribution dist : {Distribution::gauss, Distribution::uniform})
     for (double rho : {0.2, -0.4}) {

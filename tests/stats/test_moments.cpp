@@ -100,7 +100,7 @@ TEST(Moments, VarianceIntervalMatchesNormalTheoryForGaussians) {
   EXPECT_NEAR(r.kurtosis, 0.0, 5 * std::sqrt(24.0 / n));
 }
 
-// The issue the test exists for: noise of variance 0.965 (a 3.5 % cold fluid) is refused at 10^5 draws.
+// What the test is for: noise of variance 0.965 (a fluid 3.5 % cold) is refused at 10^5 draws.
 TEST(Moments, SecondMomentTestSeesAThreePercentDeficit) {
   const auto r = moments(gaussian_sample(100000, std::sqrt(0.965), 8));
   EXPECT_LT(r.second_moment_p, 1e-10);

@@ -1,8 +1,9 @@
-// The chi2, ttest and corr subcommands end to end: the built executable, its output and its exit codes
+// The chi2, ttest, corr, moments, gof and chi2d subcommands end to end: the built executable, its output and its exit codes
 // (0 = ran, whatever the verdict; 2 = bad input).
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -135,4 +136,43 @@ TEST(StatsCli, BadInputExitsTwo) {
     EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << args << "\n" << r.out;
   }
   for (const auto& f : {trunc, text, range}) std::filesystem::remove(f);
+}
+
+// The tests on ζ end to end: the hand-worked sample {1, 2, 3, 4, 10} through moments (mean 4, s² = 12.5,
+// ⟨x²⟩ = 26), the five-point U(−√3, √3) sample of AndersonDarling.HandWorkedStatistic through gof, and a
+// generator's words through chi2d both ways.
+TEST(StatsCli, MomentsGofAndChi2dEndToEnd) {
+  const auto f = temp_file("moments.txt", "1\n2\n3\n4\n10\n");
+  const CliRun m = run_cli("moments -i " + f.string() + " -f text --json");
+  std::filesystem::remove(f);
+  ASSERT_EQ(m.code, 0) << m.out;
+  const auto jm = nlohmann::json::parse(m.out);
+  EXPECT_DOUBLE_EQ(jm["mean"].get<double>(), 4.0);
+  EXPECT_DOUBLE_EQ(jm["variance"].get<double>(), 12.5);
+  EXPECT_DOUBLE_EQ(jm["second_moment"].get<double>(), 26.0);
+  EXPECT_EQ(jm["variance_ci"].size(), 2u);
+
+  std::string five;
+  for (double u : {0.1, 0.3, 0.5, 0.7, 0.9}) five += std::to_string(std::sqrt(3.0) * (2 * u - 1)) + "\n";
+  const auto g = temp_file("gof.txt", five);
+  const CliRun a = run_cli("gof -i " + g.string() + " -f text --target uniform --json");
+  std::filesystem::remove(g);
+  ASSERT_EQ(a.code, 0) << a.out;
+  const auto ja = nlohmann::json::parse(a.out);
+  EXPECT_NEAR(ja["statistic"].get<double>(), 0.13008, 1e-4);  // text input keeps 6 digits
+  EXPECT_EQ(ja["verdict"], "pass");
+
+  // 32TEA(32) passes with either pairing; 32TEA(1) on consecutive counters fails with its halves.
+  for (const char* pairs : {"halves", "words"}) {
+    const CliRun r = piped("tea32", 32, 40000, std::string("chi2d -i - -f u64 --bins 8 --json --pairs ") + pairs);
+    ASSERT_EQ(r.code, 0) << r.out;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["pairs"], pairs);
+    EXPECT_EQ(j["n"], std::string(pairs) == "halves" ? 40000 : 20000);
+    EXPECT_EQ(j["dof"], 63);
+    EXPECT_EQ(j["verdict"], "pass") << pairs;
+  }
+  const CliRun weak = piped("tea32", 1, 40000, "chi2d -i - -f u64 --bins 8 --json");
+  ASSERT_EQ(weak.code, 0) << weak.out;
+  EXPECT_EQ(nlohmann::json::parse(weak.out)["verdict"], "fail");
 }

@@ -4,11 +4,14 @@
 #include <stdlib.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/rng/registry.hpp"
 #include "dpdrng/stats/binomial.hpp"
 #include "dpdrng/study/calibrate.hpp"
+#include "dpdrng/study/report.hpp"
 #include "fake_measure.hpp"
 
 using namespace dpdrng;
@@ -43,7 +46,7 @@ CalibrationPlan small_plan() {
   p.null_studies = 20;
   p.power_studies = 3;
   p.replicas = {4};
-  p.variance = {0.0001, 0.003, 0.01};
+  p.variance = {0.0001, 0.003, 0.05};
   return p;
 }
 
@@ -75,12 +78,13 @@ TEST(Calibrate, PoolCountsAndRates) {
   EXPECT_EQ(c.nulls[0].verdicts.low, lo);
   EXPECT_EQ(c.nulls[0].verdicts.high, hi);
 
-  // Power rows: 3 sizes × {3, 4} replicas, 12 / R studies each. A 1 % temperature shift is 10 times the fake's
-  // replica spread (0.003 / √12 ≈ 0.0009 on 1.03): every study sees it; a 0.01 % shift is a tenth of it.
+  // Power rows: 3 sizes × {3, 4} replicas, 12 / R studies each. A 5 % temperature shift is 60 times the fake's
+  // replica spread (0.003 / √12 ≈ 0.0009 on 1.03): every study sees it, even through Holm's threshold over the
+  // study's ~45 tests with the t-test's 4 degrees of freedom; a 0.01 % shift is a tenth of the spread.
   ASSERT_EQ(c.power.size(), 6u);
   for (const auto& p : c.power) {
     EXPECT_EQ(p.detected.trials, std::size_t(12 / p.replicas)) << p.size;
-    if (p.size == 0.01) EXPECT_EQ(p.detected.events, p.detected.trials);
+    if (p.size == 0.05) EXPECT_EQ(p.detected.events, p.detected.trials);
     if (p.size == 0.0001) EXPECT_LT(p.detected.events, p.detected.trials);
     // The measured T error is ε plus the difference of two replica noises (spread ≈ 0.0009 / 1.03 each).
     EXPECT_NEAR(p.temperature_error, p.size, 0.0015) << p.size;
@@ -88,7 +92,7 @@ TEST(Calibrate, PoolCountsAndRates) {
   // The 90 % size of every replica count lies within the sizes tested, or at the smallest.
   for (const auto& t : c.thresholds) {
     EXPECT_FALSE(t.above) << t.replicas;
-    EXPECT_LE(t.size, 0.01);
+    EXPECT_LE(t.size, 0.05);
   }
 }
 
@@ -105,7 +109,7 @@ TEST(Calibrate, ResumesWithoutRecomputing) {
   EXPECT_EQ(second.calls, 0);
   EXPECT_EQ(b.resumed, b.cells);
   nlohmann::json ja = to_json(a), jb = to_json(b);
-  for (const char* k : {"computed", "resumed", "wall_seconds"}) ja.erase(k), jb.erase(k);
+  for (const char* k : {"computed", "resumed", "wall_seconds", "wall_seconds_total"}) ja.erase(k), jb.erase(k);
   EXPECT_EQ(ja, jb);
   // Another plan is another pool: the store refuses it rather than mixing cells.
   plan.variance = {0.5};
@@ -137,6 +141,17 @@ TEST(Calibrate, ReportReadsAMatchingCalibrationOnly) {
   for (const auto& other : {longer, more})
     EXPECT_NE(detection_limit_sentence(other, tmp.path).find("not calibrated for this config"), std::string::npos);
   EXPECT_NE(detection_limit_sentence(cfg, tmp.path / "nowhere").find("not calibrated"), std::string::npos);
+
+  // The study report carries the sentence in its header.
+  std::vector<CellResult> cells;
+  for (const auto& cell : enumerate_cells(cfg)) cells.push_back(fake.m(cell, cfg, 1));
+  ReportOptions o;
+  o.charts = false;
+  o.calibration = tmp.path / "calibration.json";
+  const fs::path md = write_report(cfg, cells, tmp.path / "study", o);
+  std::ifstream in(md);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find(s), std::string::npos);
 }
 
 TEST(Calibrate, RefusesBadPlans) {

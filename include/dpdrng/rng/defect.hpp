@@ -1,7 +1,7 @@
 #pragma once
 // A generator with a known, injected defect, for measuring what the study's verdicts can detect: a good hash
 // (Philox4x32-10) whose ζ is altered on purpose. With η_t the base's ζ for a pair at step t,
-//   ζ_t = μ + √(1+ε) · (ρ·η_{t−1} + √(1−ρ²)·η_t)
+//   ζ_t = μ + √(1+ε) · (a·η_{t−1} + √(1−a²)·η_t),  a·√(1−a²) = ρ, |ρ| ≤ 1/2 (the most an MA(1) can correlate)
 // so that ⟨ζ⟩ = μ, ⟨ζ²⟩ − μ² = 1 + ε and corr(ζ_t, ζ_{t−1}) = ρ (for η of zero mean and unit variance). It stays
 // a stateless hash: η_{t−1} is the base hash of the same pair at step t − 1, recomputed, not remembered, so the
 // numbers do not depend on the thread count. In counter mode (standalone streams) "step" is the call index.
@@ -22,7 +22,7 @@ namespace dpdrng::rng {
 
 struct DefectParams {
   double variance = 0;  // ε: ⟨ζ²⟩ − ⟨ζ⟩² = 1 + ε
-  double lag1 = 0;      // ρ: correlation of a pair's ζ at consecutive steps
+  double lag1 = 0;      // a, the weight of η_{t−1}: parse_defect solves a·√(1−a²) = ρ for the ρ asked for
   double mean = 0;      // μ: ⟨ζ⟩
 
   double scale() const { return std::sqrt(1.0 + variance); }
@@ -30,7 +30,7 @@ struct DefectParams {
 };
 
 // "defect:variance=0.01,lag1=0.1,mean=0.02,base=philox4x32": keys in any order, each at most once, all optional;
-// base = philox4x32 (10 rounds) is the only base. InputError naming the fault otherwise (ε ≤ −1, |ρ| ≥ 1,
+// base = philox4x32 (10 rounds) is the only base. InputError naming the fault otherwise (ε ≤ −1, |ρ| > 1/2,
 // a non-finite number, an unknown key).
 inline constexpr std::string_view kDefectPrefix = "defect:";
 bool is_defect(std::string_view name);  // "defect" or "defect:..."

@@ -80,7 +80,8 @@ struct Calibration {
   std::vector<PowerRow> power;
   std::vector<Threshold> thresholds;
   std::size_t cells = 0, computed = 0, resumed = 0, failed = 0;
-  double seconds = 0;   // wall time of this invocation
+  double seconds = 0;     // wall time of this invocation
+  double wall_total = 0;  // wall time of every invocation on this pool, summed
   double cell_seconds = 0;  // summed compute time of every cell in the pool (this and earlier invocations)
   std::string machine;
 };
