@@ -136,14 +136,14 @@ TEST(Feed, SymmetricUnderEveryFeedAndSeeding) {
 }
 
 // The separations of pairs inside r_c = 1 among 256 beads at ρ = 3 placed uniformly at random (minimum image),
-// as the pair loop hashes them; 40 configurations give about 1.9e5 pairs.
+// as the pair loop hashes them; 120 configurations give about 1.9e5 pairs.
 std::vector<PairInput> pairs_inside_rc() {
   const int n = 256;
   const double L = std::cbrt(n / 3.0);
   std::mt19937_64 rng(2021);
   std::uniform_real_distribution<double> pos(0.0, L);
   std::vector<PairInput> out;
-  for (int conf = 0; conf < 40; ++conf) {
+  for (int conf = 0; conf < 120; ++conf) {
     std::vector<double> x(n), y(n), z(n);
     for (int i = 0; i < n; ++i) x[i] = pos(rng), y[i] = pos(rng), z[i] = pos(rng);
     auto mi = [L](double d) { return d - L * std::nearbyint(d / L); };

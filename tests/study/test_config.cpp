@@ -120,6 +120,7 @@ TEST(StudyConfig, PaperStudyCoversBothTeaFamiliesAtAllRounds) {
   ASSERT_EQ(c.generators.size(), 2u);
   for (const auto& g : c.generators) EXPECT_EQ(g.rounds, rounds) << g.name;
   EXPECT_EQ(c.distributions, (std::vector<std::string>{"gauss", "uniform"}));
+  EXPECT_EQ(c.feeds, (std::vector<std::string>{"halves", "blocks", "inverse"}));
   EXPECT_EQ(c.scene.steps, 10000);
   EXPECT_EQ(c.scene.equilibrate, 500);
   EXPECT_EQ(c.tests.nist_sequences, 1000);
