@@ -2,6 +2,8 @@
 # a header of a layer it may not use, or when the header-only rng layer includes a library it must not need.
 # The include roots of the build (cmake/layers.cmake) enforce the same rule on what is compiled; this check also
 # covers headers no translation unit happens to include.
+cmake_minimum_required(VERSION 3.25)
+
 set(allowed_common common)
 set(allowed_rng rng common)
 set(allowed_stats stats rng common)
