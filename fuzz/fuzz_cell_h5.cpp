@@ -108,7 +108,8 @@ study::CellResult record(FuzzedDataProvider& in) {
   r.cell.reference = in.ConsumeBool();
   r.cell.nist = in.ConsumeBool();
   r.cell.seed = in.ConsumeIntegral<std::uint64_t>();
-  r.status = text(in);
+  r.status = in.PickValueInArray({study::CellStatus::ok, study::CellStatus::unstable, study::CellStatus::disrupted,
+                                   study::CellStatus::failed});
   r.unstable_step = in.ConsumeIntegral<long>();
   r.reason = text(in);
   r.seconds = any_double(in);

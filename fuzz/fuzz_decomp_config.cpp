@@ -2,20 +2,20 @@
 // every entry validates.
 #include <cstdint>
 
-#include "dpdrng/dpd/decomposition_sweep.hpp"
+#include "dpdrng/study/decomposition_sweep.hpp"
 #include "fuzz_check.hpp"
 
 using dpdrng::fuzz::require;
-namespace dpd = dpdrng::dpd;
+namespace study = dpdrng::study;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const auto sweep = dpdrng::fuzz::parse_or_refuse(data, size, dpd::parse_decomp_sweep);
+  const auto sweep = dpdrng::fuzz::parse_or_refuse(data, size, study::parse_decomp_sweep);
   if (!sweep) return 0;
-  const dpd::DecompSweep& s = *sweep;
+  const study::DecompSweep& s = *sweep;
   require(!s.generators.empty() && !s.seedings.empty() && !s.domains.empty() && !s.distributions.empty(),
           "a sweep accepted with an empty axis");
   for (const auto& g : s.generators) {
-    dpd::DecompConfig c = s.base;
+    study::DecompConfig c = s.base;
     c.noise.generator = g;
     for (const auto& seeding : s.seedings) {
       c.noise.seeding = seeding;

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "dpdrng/study/library_init.hpp"
 #include "dpdrng/study/store.hpp"
 
 using namespace dpdrng::study;
@@ -14,6 +15,7 @@ int main(int argc, char** argv) {
     std::cerr << "usage: make_cell_seeds DIR\n";
     return 2;
   }
+  init_libraries();
   const std::filesystem::path dir = argv[1];
   std::filesystem::create_directories(dir / "cells");
   std::ofstream(dir / "config.hash") << "fuzz\n";
@@ -32,7 +34,7 @@ int main(int argc, char** argv) {
   r.strings = {{"names", {"a", "bc"}}};
   store.save(r);
   std::filesystem::rename(store.cell_path(r.cell), dir / "full.h5");
-  r.status = "unstable";
+  r.status = CellStatus::unstable;
   r.unstable_step = 3;
   r.reason = "unstable at step 3: temperature runaway";
   r.scalars = {{"steps_done", 3}};

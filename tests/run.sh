@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The README's test command: installs what is missing (Debian packages), builds, and runs the test suite.
+# The README's test command: installs what is missing (Debian packages), builds, runs the test suite, and builds
+# and runs examples/pair_force against the package installed into a temporary prefix.
 # DPDRNG_SANITIZE=1 also builds and runs the whole suite under AddressSanitizer + UBSan (.ci/run sets it); any
 # failure in either build or either ctest run ends the script with a non-zero status.
 set -euo pipefail
@@ -13,6 +14,14 @@ cmake --preset release -DDPDRNG_BUILD_TESTS=ON >/dev/null
 cmake --build --preset release -j "$jobs"
 step "release tests"
 ctest --preset release -j "$jobs" --no-tests=error
+step "install, and the example consumer built against it"
+# A throw-away prefix: examples/pair_force finds the package there through find_package(dpdrng).
+prefix=$(mktemp -d)
+trap 'rm -rf "$prefix"' EXIT
+cmake --install build/release --prefix "$prefix/install" >/dev/null
+cmake -S examples/pair_force -B "$prefix/build" -DCMAKE_PREFIX_PATH="$prefix/install" >/dev/null
+cmake --build "$prefix/build" -j "$jobs"
+"$prefix/build/pair_force"
 if [[ "${DPDRNG_SANITIZE:-0}" == 1 ]]; then
   step "ASan+UBSan build"
   cmake --preset asan -DDPDRNG_BUILD_TESTS=ON >/dev/null

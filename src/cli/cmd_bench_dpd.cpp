@@ -19,6 +19,7 @@
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/dpd/water.hpp"
 #include "dpdrng/stats/summary.hpp"
+#include "dpdrng/version.hpp"
 
 namespace dpdrng::cli {
 namespace {
@@ -61,7 +62,7 @@ dpd::WaterConfig scene(const BenchDpdArgs& a, dpd::PairMode mode, std::int64_t s
   dpd::WaterConfig c;
   c.pairs = mode;
   if (mode == dpd::PairMode::cells) {
-    // The LAMMPS comparison system of issue 4: 24 000 beads at ρ = 3, γ = 4.5.
+    // The LAMMPS comparison system: 24 000 beads at ρ = 3, γ = 4.5.
     c.particles = a.particles_cells;
     c.gamma = 4.5;
   }
@@ -283,7 +284,7 @@ void run_bench_dpd(const BenchDpdArgs& a) {
   for (const auto& g : split(a.generators)) rng::find_generator(g);  // InputError for unknown names
 
   nlohmann::json out;
-  out["context"] = {{"version", DPDRNG_VERSION}, {"threads", a.threads}, {"repeat", a.repeat},
+  out["context"] = {{"version", dpdrng::kVersion}, {"threads", a.threads}, {"repeat", a.repeat},
                     {"distribution", a.distribution}, {"feed", a.feed}, {"statistic", "median wall time of the production steps (after a short untimed start)"}};
   const std::vector<Measured> table = a.scaling_only ? std::vector<Measured>{} : measure_table(a);
   const Paper paper = a.scaling_only ? Paper{} : measure_paper(a);

@@ -24,6 +24,7 @@
 #include "dpdrng/rng/inverse_normal.hpp"
 #include "dpdrng/rng/stream.hpp"
 #include "dpdrng/stats/summary.hpp"
+#include "dpdrng/version.hpp"
 
 namespace dpdrng::cli {
 namespace {
@@ -272,7 +273,7 @@ nlohmann::json run_context(const Collector& c, const BenchArgs& a) {
 #else
   const char* simd = "baseline";
 #endif
-  return {{"host", host},          {"date", utc_now()},        {"dpdrng_version", DPDRNG_VERSION},
+  return {{"host", host},          {"date", utc_now()},        {"dpdrng_version", dpdrng::kVersion},
           {"compiler", compiler},  {"build_type", build},      {"simd", simd},
           {"num_cpus", c.cpus_},   {"mhz_per_cpu", c.mhz_},    {"cpu_scaling_enabled", c.scaling_},
           {"load_avg", c.load_},   {"min_time_s", a.min_time}, {"repetitions", a.repetitions},
@@ -387,7 +388,7 @@ void run_bench(const BenchArgs& a) {
   const nlohmann::json ctx = run_context(collector, a);
   std::printf("\n%s, %s, %s, %s, dpdrng %s, %d CPUs at %.0f MHz%s\n", ctx["host"].get<std::string>().c_str(),
               ctx["compiler"].get<std::string>().c_str(), ctx["build_type"].get<std::string>().c_str(),
-              ctx["simd"].get<std::string>().c_str(), DPDRNG_VERSION, collector.cpus_, collector.mhz_,
+              ctx["simd"].get<std::string>().c_str(), dpdrng::kVersion, collector.cpus_, collector.mhz_,
               collector.scaling_ ? ", CPU frequency scaling on" : "");
 }
 

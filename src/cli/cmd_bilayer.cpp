@@ -1,4 +1,4 @@
-// dpdrng simulate-bilayer: issue 7's membrane scene (an H3(T6)2 bilayer in water) with human or JSON output.
+// dpdrng simulate-bilayer: the membrane scene (an H3(T6)2 bilayer in water) with human or JSON output.
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -66,7 +66,7 @@ struct BilayerArgs {
 
 const bool registered = register_command(41, [](CLI::App& root) {
   auto a = std::make_shared<BilayerArgs>();
-  CLI::App* sub = root.add_subcommand("simulate-bilayer", "run the membrane scene (H3(T6)2 bilayer, issue 7)");
+  CLI::App* sub = root.add_subcommand("simulate-bilayer", "run the membrane scene (H3(T6)2 bilayer in water)");
   sub->footer(
       "Grafmueller et al. (2009) lipids: 146 H3(T6)2 in a 10 x 10 x 18 box with water, 5400 beads, gamma 4.5,\n"
       "a_ij HH 30 HT 35 HW 30 TT 10 TW 75 WW 25, bonds 128/0.5, bending 15. dt_warmup for the first --warmup\n"

@@ -9,7 +9,7 @@
 #include "dpdrng/cli/registry.hpp"
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/common/output.hpp"
-#include "dpdrng/dpd/decomposition_sweep.hpp"
+#include "dpdrng/study/decomposition_sweep.hpp"
 
 namespace dpdrng::cli {
 namespace {
@@ -20,7 +20,7 @@ struct DecomposeArgs {
   std::string seeding = "distance";
   std::string distribution = "gauss", feed = "halves";
   GeneratorOptions gen;
-  dpd::DecompConfig cfg;
+  study::DecompConfig cfg;
   bool no_reference = false, json = false, quiet = false;
   std::string study, out = "results/decomposition";
 };
@@ -40,7 +40,7 @@ void print_boundary(const char* title, const dpd::BoundaryStats& b) {
   if (b.grid_straddle_expected > 0) std::cout << "  grid straddles expected   " << b.grid_straddle_expected << "\n";
 }
 
-void print_run(const char* title, const dpd::DecompRun& r) {
+void print_run(const char* title, const study::DecompRun& r) {
   std::cout << title << ": " << r.status << " (" << r.steps_done << " steps, " << r.seconds << " s)\n"
             << "  k_BT                      " << r.temperature.mean << " ± " << r.temperature.sem << "\n"
             << "  pressure                  " << r.pressure.mean << " ± " << r.pressure.sem << "\n"
@@ -49,7 +49,7 @@ void print_run(const char* title, const dpd::DecompRun& r) {
             << "  centre-of-mass share of the kinetic energy " << r.com_kinetic_share << "\n";
 }
 
-void print_human(const dpd::DecompResult& r) {
+void print_human(const study::DecompResult& r) {
   std::cout << "decomposition check: water, " << r.particles << " beads, box " << r.box_length << ", domains "
             << r.domains << ", " << r.generator << " / " << r.seeding << " / " << r.distribution << " / feed " << r.feed << "\n";
   print_boundary("first force evaluation (initial configuration)", r.snapshot);
@@ -69,18 +69,18 @@ void print_human(const dpd::DecompResult& r) {
 }
 
 void run_study(const DecomposeArgs& a) {
-  const dpd::DecompSweep sw = dpd::load_decomp_sweep(a.study);
+  const study::DecompSweep sw = study::load_decomp_sweep(a.study);
   prepare_output_directory(a.out, "--out");
-  dpd::SweepProgress progress;
+  study::SweepProgress progress;
   if (!a.quiet)
-    progress = [](std::size_t done, std::size_t total, const dpd::DecompResult& r) {
+    progress = [](std::size_t done, std::size_t total, const study::DecompResult& r) {
       std::cerr << "[" << done << "/" << total << "] " << r.generator << " " << r.seeding << " " << r.domains << ": "
                 << 100 * r.decomposed.boundary.mismatch_fraction() << " % mismatched\n";
     };
-  const auto rows = dpd::run_decomp_sweep(sw, progress);
-  const std::string md = dpd::write_decomp_outputs(sw, rows, a.out, a.quiet ? nullptr : &std::cerr);
+  const auto rows = study::run_decomp_sweep(sw, progress);
+  const std::string md = study::write_decomp_outputs(sw, rows, a.out, a.quiet ? nullptr : &std::cerr);
   nlohmann::json j = nlohmann::json::array();
-  for (const auto& r : rows) j.push_back(dpd::to_json(r));
+  for (const auto& r : rows) j.push_back(study::to_json(r));
   if (a.json)
     std::cout << j.dump(2) << "\n";
   else
@@ -90,16 +90,16 @@ void run_study(const DecomposeArgs& a) {
 void run_decompose(DecomposeArgs& a) {
   if (!a.study.empty()) return run_study(a);
   if (a.scene != "water") throw InputError("unknown scene '" + a.scene + "' (known: water)");
-  dpd::DecompConfig cfg = a.cfg;
+  study::DecompConfig cfg = a.cfg;
   cfg.domains = dpd::parse_domains(a.domains);
   cfg.noise.generator = a.gen.spec();
   cfg.noise.seeding = dpd::parse_decomp_seeding(a.seeding);
   cfg.noise.distribution = rng::parse_distribution(a.distribution);
   cfg.noise.feed = rng::parse_feed(a.feed);
   cfg.reference = !a.no_reference;
-  const dpd::DecompResult r = dpd::run_decomposition(cfg);
+  const study::DecompResult r = study::run_decomposition(cfg);
   if (a.json)
-    std::cout << dpd::to_json(r).dump(2) << "\n";
+    std::cout << study::to_json(r).dump(2) << "\n";
   else
     print_human(r);
 }

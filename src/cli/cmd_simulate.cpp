@@ -148,7 +148,7 @@ const bool registered = register_command(40, [](CLI::App& root) {
       "reported pressure is then the conservative one). A run that blows up still exits 0: its status reads\n"
       "'unstable at step k: reason'.");
   auto& c = a->cfg;
-  sub->add_option("--scene", a->scene, "scene: water or bilayer (issue 7's membrane)")->capture_default_str();
+  sub->add_option("--scene", a->scene, "scene: water or bilayer (the H3(T6)2 membrane)")->capture_default_str();
   add_integer(*sub, "--particles,-n", c.particles, "number of beads", {2, 50'000'000});
   add_real(*sub, "--density", c.density, "bead density rho");
   add_real(*sub, "--a", c.a, "conservative repulsion a_ij");

@@ -1,6 +1,4 @@
 // dpdrng: thin glue from the command line to the library; every subcommand registers itself (registry.hpp).
-#include <gsl/gsl_errno.h>
-
 #include <algorithm>
 #include <iostream>
 
@@ -8,6 +6,8 @@
 #include "dpdrng/cli/registry.hpp"
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/common/output.hpp"
+#include "dpdrng/study/library_init.hpp"
+#include "dpdrng/version.hpp"
 
 namespace dpdrng::cli {
 std::vector<std::pair<int, Attach>>& commands();
@@ -49,12 +49,11 @@ std::string subcommand_message(CLI::App& root) {
 }  // namespace dpdrng::cli
 
 int main(int argc, char** argv) {
-  // GSL's default handler aborts; every GSL call in the library checks its status instead.
-  gsl_set_error_handler_off();
+  dpdrng::study::init_libraries();
   CLI::App app{"dpdrng: how cheap may the per-pair random numbers of a DPD simulation be?\n"
                "Hash generators, statistical tests, a DPD engine and a study driver in one tool.",
                "dpdrng"};
-  app.set_version_flag("--version", std::string("dpdrng ") + DPDRNG_VERSION);
+  app.set_version_flag("--version", std::string("dpdrng ") + dpdrng::kVersion);
   app.require_subcommand(1);
   app.fallthrough(false);
   auto& list = dpdrng::cli::commands();

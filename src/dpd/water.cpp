@@ -26,7 +26,7 @@ std::string unstable(std::int64_t step, const std::string& why) {
   return "unstable at step " + std::to_string(step) + ": " + why;
 }
 
-// The first reason the state at `step` is no longer a simulation, or "".
+// The first reason the state at `step` cannot go on as a simulation, or "".
 std::string check(const WaterConfig& cfg, std::int64_t step, double T, const ForceSums& f) {
   std::ostringstream why;
   if (!std::isfinite(T) || !std::isfinite(f.virial[0] + f.virial[1] + f.virial[2]))

@@ -6,6 +6,7 @@
 #include "compare.hpp"
 #include "dpdrng/rng/registry.hpp"
 #include "dpdrng/stats/multiple.hpp"
+#include "dpdrng/stats/nist/battery.hpp"
 #include "dpdrng/stats/summary.hpp"
 
 namespace dpdrng::study {
@@ -65,7 +66,7 @@ std::string missing_reference(const VariantReport* ref, int replicas, const std:
   std::size_t usable = 0;
   if (ref) {
     usable = ref->cells.size();
-    for (const auto* c : ref->broken) usable += c->status == "unstable";
+    for (const auto* c : ref->broken) usable += c->status == CellStatus::unstable;
   }
   if (usable >= std::size_t(replicas)) return "";
   return "no reference data (" + name + ": " + std::to_string(std::size_t(replicas) - usable) + " of " +
@@ -134,10 +135,8 @@ void read_nist(VariantReport& v, double alpha) {
       r.passed = (*passed)[i];
       r.applicable = (*appl)[i];
       if (r.applicable > 0) {
-        // SP800-22 §4.2.1: the proportion passing must lie within (1−α) ± 3√(α(1−α)/m).
         const double m = r.applicable;
-        const double lo = (1 - alpha) - 3 * std::sqrt(alpha * (1 - alpha) / m);
-        r.proportion_ok = r.passed / m >= lo;
+        r.proportion_ok = r.passed / m >= stats::nist::proportion_range(alpha, m).low;
         r.uniformity_ok = !(r.p_uniformity < 0.0001);
       }
       r.ok = stored_ok && stored_ok->size() == n ? (*stored_ok)[i] != 0 : (r.proportion_ok && r.uniformity_ok);
@@ -166,7 +165,7 @@ std::vector<VariantReport> group(const StudyConfig& config, const std::vector<Ce
     VariantReport v;
     v.key = k;
     for (const auto& c : cells)
-      if (variant_of(c.cell) == k) (c.status == "ok" ? v.cells : v.broken).push_back(&c);
+      if (variant_of(c.cell) == k) (c.status == CellStatus::ok ? v.cells : v.broken).push_back(&c);
     out.push_back(std::move(v));
   }
   return out;

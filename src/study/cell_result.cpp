@@ -39,6 +39,22 @@ T get(const std::map<std::string, h5::Attribute>& a, const std::string& name) {
 
 }  // namespace
 
+std::string_view to_string(CellStatus s) {
+  switch (s) {
+    case CellStatus::ok: return "ok";
+    case CellStatus::unstable: return "unstable";
+    case CellStatus::disrupted: return "disrupted";
+    case CellStatus::failed: return "failed";
+  }
+  return "?";
+}
+
+CellStatus parse_cell_status(std::string_view text) {
+  for (const CellStatus s : {CellStatus::ok, CellStatus::unstable, CellStatus::disrupted, CellStatus::failed})
+    if (text == to_string(s)) return s;
+  throw std::runtime_error("cell record has an unknown status '" + std::string(text) + "'");
+}
+
 void write_cell(hid_t g, const CellResult& r) {
   const Cell& c = r.cell;
   h5::write_attribute(g, "cell.id", c.id());
@@ -53,7 +69,7 @@ void write_cell(hid_t g, const CellResult& r) {
   h5::write_attribute(g, "cell.nist", std::int64_t{c.nist});
   // As a string: HDF5 has a uint64 type but h5dump users compare seeds by eye, and int64 would wrap.
   h5::write_attribute(g, "cell.seed", std::to_string(c.seed));
-  h5::write_attribute(g, "status", r.status);
+  h5::write_attribute(g, "status", std::string(to_string(r.status)));
   h5::write_attribute(g, "unstable_step", std::int64_t{r.unstable_step});
   h5::write_attribute(g, "reason", r.reason);
   h5::write_attribute(g, "seconds", r.seconds);
@@ -84,7 +100,7 @@ CellResult read_cell(hid_t g) {
   c.reference = get<std::int64_t>(a, "cell.reference") != 0;
   c.nist = get<std::int64_t>(a, "cell.nist") != 0;
   c.seed = parse_number<std::uint64_t>(get<std::string>(a, "cell.seed"), "cell.seed");
-  r.status = get<std::string>(a, "status");
+  r.status = parse_cell_status(get<std::string>(a, "status"));
   r.unstable_step = static_cast<long>(get<std::int64_t>(a, "unstable_step"));
   r.reason = get<std::string>(a, "reason");
   r.seconds = get<double>(a, "seconds");

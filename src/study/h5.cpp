@@ -5,11 +5,6 @@
 namespace dpdrng::study::h5 {
 namespace {
 
-// HDF5 prints its error stack to stderr by default; we report failures ourselves.
-const bool silenced = [] {
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  return true;
-}();
 
 void check(herr_t status, const std::string& what) {
   if (status < 0) throw std::runtime_error("HDF5: " + what + " failed");
@@ -82,7 +77,6 @@ std::mutex& lock() {
 }
 
 Handle::Handle(hid_t id, Closer close, const std::string& what) : id_(id), close_(close) {
-  (void)silenced;
   if (id < 0) throw std::runtime_error("HDF5: " + what + " failed");
 }
 

@@ -36,8 +36,8 @@ dpd::BilayerConfig bilayer_engine_config(const Cell& cell, const StudyConfig& co
 
 void record_bilayer(const dpd::BilayerResult& r, CellResult& out) {
   if (!r.ok()) {
-    out.status = r.status.rfind("disrupted", 0) == 0 ? "disrupted" : "unstable";
-    out.unstable_step = out.status == "unstable" ? static_cast<long>(r.steps_done) : step_of(r.status);
+    out.status = r.status.rfind("disrupted", 0) == 0 ? CellStatus::disrupted : CellStatus::unstable;
+    out.unstable_step = out.status == CellStatus::unstable ? static_cast<long>(r.steps_done) : step_of(r.status);
     out.reason = r.status;
   }
   auto& sc = out.scalars;
@@ -54,7 +54,7 @@ void record_bilayer(const dpd::BilayerResult& r, CellResult& out) {
   detail::record_costs(r.timings, r.steps_done, out);
   // A run that blew up has no observables: they stay absent (null to h5py), never 0. A disrupted one (a lipid
   // left the bilayer) ran to the end: its observables are data.
-  if (out.status == "unstable") return;
+  if (out.status == CellStatus::unstable) return;
   put(out, "temperature", r.temperature);
   put(out, "pressure", r.pressure);
   put(out, "pressure_xx", r.pressure_diag[0]);

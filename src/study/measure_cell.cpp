@@ -21,7 +21,7 @@ CellResult measure_cell(const Cell& cell, const StudyConfig& config, int threads
   record_run(run, out);
   // A blown-up run still has taps up to the blow-up; its tests would describe a broken trajectory, so the
   // cell keeps the observables up to that step and the reason, and skips the tests.
-  if (out.status != "ok") return out;
+  if (out.status != CellStatus::ok) return out;
   record_chi2(run.taps, plan, config.tests, out);
   record_ttest(run.taps, config.tests, out);
   record_correlations(run.taps, config.tests, out);

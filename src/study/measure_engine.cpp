@@ -113,7 +113,7 @@ void put_jackknife(const std::vector<std::vector<double>>& curves, const std::st
 
 void record_run(const dpd::RunResult& r, CellResult& out) {
   if (!r.ok()) {
-    out.status = "unstable";
+    out.status = CellStatus::unstable;
     out.unstable_step = static_cast<long>(r.steps_done);
     out.reason = r.status;
   }

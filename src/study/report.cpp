@@ -53,7 +53,7 @@ std::string cells_csv(const std::vector<CellResult>& cells) {
   o << '\n';
   for (const auto& c : cells) {
     o << c.cell.id() << ',' << c.cell.generator << ',' << c.cell.rounds << ',' << c.cell.distribution << ',' << c.cell.feed
-      << ',' << c.cell.seeding << ',' << num(c.cell.dt) << ',' << c.cell.replica << ',' << c.status << ','
+      << ',' << c.cell.seeding << ',' << num(c.cell.dt) << ',' << c.cell.replica << ',' << to_string(c.status) << ','
       << c.unstable_step << ',' << num(c.seconds);
     for (const auto& n : names) o << ',' << (c.has(n) ? num(c.scalar(n, NAN)) : "");
     o << '\n';
@@ -71,7 +71,8 @@ std::string report_header(const StudyConfig& config, const Analysis& a, const st
   const std::size_t expected = enumerate_cells(config).size();
   std::size_t unstable = 0, failed = 0, disrupted = 0;
   for (const auto& c : cells)
-    unstable += c.status == "unstable", failed += c.status == "failed", disrupted += c.status == "disrupted";
+    unstable += c.status == CellStatus::unstable, failed += c.status == CellStatus::failed,
+    disrupted += c.status == CellStatus::disrupted;
   const auto& s = config.scene;
   std::ostringstream md;
   const std::time_t now = std::time(nullptr);
@@ -119,11 +120,11 @@ std::string broken_cells_markdown(const std::vector<CellResult>& cells) {
   std::ostringstream md;
   md << "## Unstable and failed cells\n\n";
   std::size_t broken = 0;
-  for (const auto& c : cells) broken += c.status != "ok";
+  for (const auto& c : cells) broken += c.status != CellStatus::ok;
   if (broken == 0) md << "None.\n\n";
   for (const auto& c : cells)
-    if (c.status != "ok")
-      md << "- `" << c.cell.id() << "`: " << c.status
+    if (c.status != CellStatus::ok)
+      md << "- `" << c.cell.id() << "`: " << to_string(c.status)
          << (c.unstable_step >= 0 ? " at step " + std::to_string(c.unstable_step) : "") << " — " << c.reason << "\n";
   for (const auto& c : cells)
     for (const auto& [k, v] : c.notes) md << "- `" << c.cell.id() << "` " << k << ": " << v << "\n";

@@ -6,9 +6,12 @@
 #include <fstream>
 #include <map>
 #include <ostream>
+#include <span>
 #include <sstream>
+#include <vector>
 
 #include "dpdrng/common/output.hpp"
+#include "dpdrng/stats/summary.hpp"
 #include "dpdrng/study/report.hpp"
 #include "report_chart.hpp"
 #include "report_common.hpp"
@@ -91,6 +94,16 @@ std::vector<double> mean_series(const std::vector<const CellResult*>& cells, con
 }  // namespace detail
 
 namespace {
+
+// The replicas' kinetic temperatures of a variant's cells, and their spread (0 for a single replica).
+template <class Cells>
+std::vector<double> temperatures(const Cells& cells) {
+  std::vector<double> t;
+  for (const auto* c : cells)
+    if (c->has("temperature_mean")) t.push_back(c->scalar("temperature_mean", 0));
+  return t;
+}
+double spread(std::span<const double> t) { return t.size() > 1 ? stats::sample_sd(t) : 0; }
 using detail::Chart;
 using detail::mean_series;
 using detail::Line;
@@ -196,16 +209,10 @@ std::vector<std::string> write_charts(const Analysis& a, const std::vector<CellR
     if (ref) {
       cost.extra += hline(ref->ns_per_number, ref->key.label(), "black");
       step.extra += hline(ref->step_ms, ref->key.label(), "black");
-      double tm = 0, t2 = 0;
-      std::size_t n = 0;
-      for (const auto* c : ref->cells)
-        if (c->has("temperature_mean")) {
-          tm += c->scalar("temperature_mean", 0);
-          t2 += std::pow(c->scalar("temperature_mean", 0), 2);
-          ++n;
-        }
+      const std::vector<double> t = temperatures(ref->cells);
+      const std::size_t n = t.size();
       if (n > 0) {
-        const double m = tm / double(n), s = n > 1 ? std::sqrt(std::max(0.0, (t2 - n * m * m) / double(n - 1))) : 0;
+        const double m = stats::mean(t), s = spread(t);
         temp.extra += hline(m, ref->key.label() + " mean", "black");
         if (n > 1) {
           temp.extra += hline(m + s, "", "gray50");
@@ -228,15 +235,9 @@ std::vector<std::string> write_charts(const Analysis& a, const std::vector<CellR
         const double r = v->key.rounds;
         if (std::isfinite(v->ns_per_number)) lc.rows.push_back({r, v->ns_per_number});
         if (std::isfinite(v->step_ms)) ls.rows.push_back({r, v->step_ms});
-        std::vector<double> t;
-        for (const auto* c : v->cells)
-          if (c->has("temperature_mean")) t.push_back(c->scalar("temperature_mean", 0));
+        const std::vector<double> t = temperatures(v->cells);
         if (!t.empty()) {
-          double m = 0, s = 0;
-          for (double x : t) m += x;
-          m /= double(t.size());
-          for (double x : t) s += (x - m) * (x - m);
-          s = t.size() > 1 ? std::sqrt(s / double(t.size() - 1)) : 0;
+          const double m = stats::mean(t), s = spread(t);
           lt.rows.push_back({r, m, s});
         }
         for (const auto& p : v->passes) {

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "dpdrng/stats/nist/battery.hpp"
 #include "dpdrng/study/report.hpp"
 #include "report_common.hpp"
 
@@ -219,7 +220,7 @@ std::string nist_final_analysis_report(const VariantReport& v, double alpha) {
   o << "\n\n" << rule
     << "The minimum pass rate for each statistical test with the exception of the\n"
        "random excursion (variant) test is approximately = "
-    << fmt("%.6f", (1 - alpha) - 3 * std::sqrt(alpha * (1 - alpha) / std::max(1.0, max_m))) << " for a\n"
+    << fmt("%.6f", stats::nist::proportion_range(alpha, std::max(1.0, max_m)).low) << " for a\n"
     << "sample size = " << max_m << " binary sequences.\n\n"
     << "The minimum pass rate for the random excursion (variant) test is computed from\n"
        "the number of sequences with enough cycles (the PROPORTION denominator).\n\n"

@@ -76,7 +76,7 @@ RunSummary run_study(const StudyConfig& config, Store& store, const RunOptions& 
       } catch (const std::exception& e) {
         // One broken cell must not stop the sweep: it is stored as failed, with the reason.
         r = CellResult{};
-        r.status = "failed";
+        r.status = CellStatus::failed;
         r.reason = e.what();
       }
       r.cell = cell;
@@ -91,9 +91,9 @@ RunSummary run_study(const StudyConfig& config, Store& store, const RunOptions& 
       }
       std::lock_guard lk(mu);
       ++sum.computed;
-      if (r.status == "unstable") ++sum.unstable;
-      if (r.status == "disrupted") ++sum.disrupted;
-      if (r.status == "failed") ++sum.failed;
+      if (r.status == CellStatus::unstable) ++sum.unstable;
+      if (r.status == CellStatus::disrupted) ++sum.disrupted;
+      if (r.status == CellStatus::failed) ++sum.failed;
       busy[cell.nist] += r.seconds;
       ++done_kind[cell.nist];
       --left_kind[cell.nist];
@@ -109,8 +109,8 @@ RunSummary run_study(const StudyConfig& config, Store& store, const RunOptions& 
         char line[256];
         std::snprintf(line, sizeof line, "[study] %zu/%zu cells  %-10s %-7s %-9s rep%-2d %6.1fs  %s%s  ETA %s\n",
                       done, sum.cells, cell.label().c_str(), cell.distribution.c_str(), cell.seeding.c_str(),
-                      cell.replica, r.seconds, r.status.c_str(),
-                      r.status == "ok" ? "" : (" (" + r.reason + ")").c_str(), format_duration(eta).c_str());
+                      cell.replica, r.seconds, std::string(to_string(r.status)).c_str(),
+                      r.status == CellStatus::ok ? "" : (" (" + r.reason + ")").c_str(), format_duration(eta).c_str());
         *options.progress << line << std::flush;
       }
     }

@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "dpdrng/common/error.hpp"
+#include "dpdrng/version.hpp"
 
 namespace dpdrng::study {
 namespace fs = std::filesystem;
@@ -231,7 +232,7 @@ std::size_t Store::assemble(const StudyConfig& config) const {
     h5::write_attribute(dst.id(), "config_toml", config.source_text);
     h5::write_attribute(dst.id(), "config_canonical_json", config.canonical().dump());
     h5::write_attribute(dst.id(), "config_hash", config.hash);
-    h5::write_attribute(dst.id(), "dpdrng_version", std::string(DPDRNG_VERSION));
+    h5::write_attribute(dst.id(), "dpdrng_version", std::string(dpdrng::kVersion));
     h5::Handle cells = h5::create_group(dst.id(), "cells");
     for (const auto& p : files) {
       try {

@@ -2,6 +2,7 @@
 // Runs the built `dpdrng` binary (DPDRNG_CLI_PATH) through the shell for the CLI contract tests.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -21,10 +22,11 @@ inline std::string slurp(const std::string& path) {
   return {std::istreambuf_iterator<char>(in), {}};
 }
 
-// A scratch path unique to the running test.
+// A scratch path unique to the running test and process: suites of several checkouts may run at once.
 inline std::string scratch(const std::string& suffix) {
   const auto* t = ::testing::UnitTest::GetInstance()->current_test_info();
-  return ::testing::TempDir() + "dpdrng_" + t->test_suite_name() + "_" + t->name() + suffix;
+  return ::testing::TempDir() + "dpdrng_" + t->test_suite_name() + "_" + t->name() + "_" +
+         std::to_string(getpid()) + suffix;
 }
 
 // Runs `dpdrng <args>`, stdout and stderr to files; code -1 if it did not exit normally (a crash).

@@ -1,5 +1,5 @@
-// The bilayer scene's model and builder: topology as issue 7 lists it, a deterministic pre-assembled
-// configuration, and the engine's typed pair forces plus the bonded terms checked against the total energy
+// The bilayer scene's model and builder: topology as Grafmüller, Shillcock & Lipowsky (2009) give it, a
+// deterministic pre-assembled configuration, and the engine's typed pair forces plus the bonded terms checked against the total energy
 // (finite differences of the forces, box-stretch derivative of the virial).
 #include <gtest/gtest.h>
 

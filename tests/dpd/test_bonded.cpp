@@ -80,7 +80,7 @@ TEST(Bonded, CosineBendForceIsMinusGradient) {
 
 TEST(Bonded, ChainForcesAreMinusGradientAndSumToZero) {
   std::mt19937_64 eng(3);
-  const BondedForces bf;  // issue 7's constants: k_bond 128, r0 0.5, k_bend 15
+  const BondedForces bf;  // the H3(T6)2 model's constants: k_bond 128, r0 0.5, k_bend 15
   for (int rep = 0; rep < 10; ++rep) {
     System s = chain(eng, 7, Box{{3, 4, 3.5}});
     const Topology t = chain_topology(7);

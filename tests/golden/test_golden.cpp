@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "dpdrng/dpd/decomposition_sweep.hpp"
 #include "dpdrng/dpd/water.hpp"
 #include "dpdrng/rng/stream.hpp"
 #include "dpdrng/study/config.hpp"
+#include "dpdrng/study/decomposition_sweep.hpp"
 #include "dpdrng/study/h5.hpp"
 #include "dpdrng/study/measure.hpp"
 #include "dpdrng/study/runner.hpp"
@@ -212,12 +212,12 @@ TEST(Golden, BilayerStudyCells) {
 }
 
 TEST(Golden, DecompositionSweep) {
-  const dpd::DecompSweep sweep = dpd::load_decomp_sweep(source("decomposition.toml"));
+  const study::DecompSweep sweep = study::load_decomp_sweep(source("decomposition.toml"));
   Runs runs;
-  for (const auto& r : dpd::run_decomp_sweep(sweep)) {
+  for (const auto& r : study::run_decomp_sweep(sweep)) {
     const std::string name = r.generator + "/" + r.seeding + "/" + r.distribution + "/" + r.domains;
     EXPECT_FALSE(runs.count(name)) << name;
-    flatten(dpd::to_json(r), "", runs[name], [](const std::string& path) {
+    flatten(study::to_json(r), "", runs[name], [](const std::string& path) {
       return path != "seconds" && !path.ends_with("/seconds");
     });
   }

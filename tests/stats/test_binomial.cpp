@@ -2,7 +2,6 @@
 // exact binomial tails computed with MPFR/GMP here, against R's published binom.test interval, and against each
 // other (p < 1 − c exactly when the interval at confidence c excludes p0).
 #include <gmp.h>
-#include <gsl/gsl_errno.h>
 #include <gtest/gtest.h>
 #include <mpfr.h>
 
@@ -15,7 +14,6 @@
 using namespace dpdrng::stats;
 
 namespace {
-const bool gsl_quiet = (gsl_set_error_handler_off(), true);
 
 // P[X ≤ k] and P[X ≥ k] for X ~ Binomial(n, num/den), summed term by term in 256-bit floating point from exact
 // binomial coefficients: an evaluation that shares nothing with GSL's incomplete beta function.

@@ -1,7 +1,6 @@
 // Correlation checks of pair noise: Pearson against a published example, the matrix layouts, and the point of
 // the exercise: neighbouring-input weakness that χ² cannot see.
 #include <gtest/gtest.h>
-#include <gsl/gsl_errno.h>
 
 #include <vector>
 
@@ -17,7 +16,6 @@ using namespace dpdrng;
 using namespace dpdrng::stats;
 
 namespace {
-const bool gsl_quiet = (gsl_set_error_handler_off(), true);
 
 constexpr std::size_t kPairs = 2048, kSteps = 64;
 

@@ -1,6 +1,5 @@
 // The L² F test of two groups of curves: a hand computation, its calibration under the null on correlated,
 // unequal-variance bins, and its power.
-#include <gsl/gsl_errno.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,7 +14,6 @@
 using namespace dpdrng::stats;
 
 namespace {
-const bool gsl_quiet = (gsl_set_error_handler_off(), true);
 
 // Upper tail of F(d1, d2) at f by Simpson integration of its density on t = f/(f + d2/d1) ∈ [0, 1) (the
 // regularized incomplete beta), sharing nothing with GSL.

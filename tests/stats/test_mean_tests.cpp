@@ -1,6 +1,5 @@
 // Summaries and t-tests against R's published outputs for the sleep data (Cushny & Peebles 1905, R's
 // `sleep`; the outputs are those of ?t.test and ?sleep) and hand computations for the pooled run errors.
-#include <gsl/gsl_errno.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,7 +11,6 @@
 using namespace dpdrng::stats;
 
 namespace {
-const bool gsl_quiet = (gsl_set_error_handler_off(), true);
 
 const std::vector<double> kGroup1 = {0.7, -1.6, -0.2, -1.2, -0.1, 3.4, 3.7, 0.8, 0.0, 2.0};
 const std::vector<double> kGroup2 = {1.9, 0.8, 1.1, 0.1, -0.1, 4.4, 5.5, 1.6, 4.6, 3.4};

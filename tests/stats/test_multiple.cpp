@@ -1,5 +1,4 @@
 // Holm's adjustment and Stouffer's combination, by hand from their definitions.
-#include <gsl/gsl_errno.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,7 +10,6 @@
 using namespace dpdrng::stats;
 
 namespace {
-const bool gsl_quiet = (gsl_set_error_handler_off(), true);
 }
 
 // p = (0.01, 0.02, 0.03, 0.04, 0.05): 5·0.01, 4·0.02, 3·0.03, then max(0.09, 2·0.04), max(0.09, 0.05); the same

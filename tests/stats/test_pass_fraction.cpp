@@ -1,6 +1,5 @@
 // Pass fractions: counting verdicts, their interval and test (binomial.hpp, tested in test_binomial.cpp), chunking.
 #include <gtest/gtest.h>
-#include <gsl/gsl_errno.h>
 
 #include <cmath>
 #include <vector>
@@ -16,7 +15,6 @@ using namespace dpdrng;
 using namespace dpdrng::stats;
 
 namespace {
-const bool gsl_quiet = (gsl_set_error_handler_off(), true);
 
 std::vector<double> unit_stream(int rounds, std::uint64_t start, std::size_t n) {
   rng::GeneratorSpec spec;

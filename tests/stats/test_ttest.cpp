@@ -1,6 +1,5 @@
 // Lag-1 correlation t-test: the estimator, the t distribution's tails, "not applicable" cases.
 #include <gtest/gtest.h>
-#include <gsl/gsl_errno.h>
 
 #include <cmath>
 #include <numeric>
@@ -15,7 +14,6 @@ using namespace dpdrng;
 using namespace dpdrng::stats;
 
 namespace {
-const bool gsl_quiet = (gsl_set_error_handler_off(), true);
 
 std::vector<double> iota_series(std::size_t n) {
   std::vector<double> x(n);

@@ -150,7 +150,7 @@ TEST(StudyAnalysis, BrokenCellsAreCountedNotAveraged) {
   auto cells = fake_cells(cfg, 0.0);
   for (auto& c : cells)
     if (c.cell.generator == "tea64") {
-      c.status = "unstable";
+      c.status = CellStatus::unstable;
       c.unstable_step = 12;
       c.reason = "unstable at step 12: temperature runaway";
       c.scalars["temperature_mean"] = 1e9;
@@ -245,7 +245,7 @@ TEST(StudyAnalysis, MissingReferenceGivesNoVerdict) {
         if (std::string(how) == "missing") {
           cells.erase(it);
         } else {
-          it->status = "failed";
+          it->status = CellStatus::failed;
           it->reason = "cannot read cells/mt19937-rep02.h5";
         }
         break;

@@ -145,7 +145,7 @@ TEST(BilayerStudyConfig, ErrorsNameTheKey) {
 }
 
 // Existing result directories are keyed by the canonical form's hash: the bilayer's keys must not have changed
-// it for water configs, or results/okada2021 could no longer be reported or resumed.
+// it for water configs, or results/okada2021 could not be reported or resumed.
 TEST(BilayerStudyConfig, WaterConfigHashUnchanged) {
   const fs::path stored = fs::path(DPDRNG_SOURCE_DIR) / "results" / "okada2021" / "config.hash";
   if (!fs::exists(stored)) GTEST_SKIP() << stored << " not present";
@@ -213,7 +213,7 @@ TEST(BilayerStudyCli, RunResumeReport) {
   ASSERT_EQ(cells.size(), 2u);  // mt19937 and tea32(1), one replica
   std::map<std::string, const CellResult*> by_label;
   for (const auto& c : cells) {
-    ASSERT_EQ(c.status, "ok") << c.cell.id() << ": " << c.reason;
+    ASSERT_EQ(c.status, CellStatus::ok) << c.cell.id() << ": " << c.reason;
     by_label[c.cell.label()] = &c;
     for (const char* n : {"temperature_mean", "pressure_xx_mean", "pressure_yy_mean", "pressure_zz_mean",
                           "tension_mean", "thickness_mean", "tail_order_mean", "temperature_sem", "tension_sem"})

@@ -69,7 +69,7 @@ void write(const fs::path& p, const std::string& text) { std::ofstream(p) << tex
 
 // A cell's physics and test results; timings differ from run to run and are left out.
 std::string fingerprint(const CellResult& r) {
-  std::string s = r.cell.id() + "|" + r.status;
+  std::string s = r.cell.id() + "|" + std::string(to_string(r.status));
   for (const auto& [k, v] : r.scalars)
     if (k.rfind("cost.", 0) != 0) s += "|" + k + "=" + std::to_string(v);
   for (const auto& [k, v] : r.series) {
@@ -138,7 +138,7 @@ TEST(StudyCli, KilledRunResumesToTheUninterruptedResult) {
   ASSERT_EQ(run_cli("study run " + cfg + " --threads 2 --out '" + whole.string() + "'"), 0);
   const auto expected = fingerprints(whole);
   ASSERT_EQ(expected.size(), 9u);  // 3 replicas × (mt19937, tea32(1), tea32(8))
-  for (const auto& c : Store(whole).load_all()) ASSERT_EQ(c.status, "ok") << c.cell.id() << ": " << c.reason;
+  for (const auto& c : Store(whole).load_all()) ASSERT_EQ(c.status, CellStatus::ok) << c.cell.id() << ": " << c.reason;
 
   // Start the run and kill it (SIGKILL: no chance to clean up) once it has finished some cells.
   const pid_t pid = fork();
@@ -214,7 +214,7 @@ TEST(StudyCli, ABlownUpRunIsRecordedAsUnstableAndTheSweepGoesOn) {
   const auto cells = Store(tmp.path / "o").load_all();
   ASSERT_EQ(cells.size(), 9u);
   for (const auto& c : cells) {
-    EXPECT_EQ(c.status, "unstable") << c.cell.id();
+    EXPECT_EQ(c.status, CellStatus::unstable) << c.cell.id();
     EXPECT_GT(c.unstable_step, 0) << c.cell.id();
     EXPECT_NE(c.reason.find("unstable at step"), std::string::npos) << c.reason;
   }

@@ -45,7 +45,7 @@ MeasureFn as_fn(fake::FakeMeasure& f) {
 
 // Everything a cell holds, as text: two stores are equal when these agree for every cell.
 std::string fingerprint(const CellResult& r) {
-  std::string s = r.cell.id() + "|" + r.status + "|" + r.reason;
+  std::string s = r.cell.id() + "|" + std::string(to_string(r.status)) + "|" + r.reason;
   for (const auto& [k, v] : r.scalars) s += "|" + k + "=" + std::to_string(v);
   for (const auto& [k, v] : r.series) {
     s += "|" + k + ":";
@@ -81,7 +81,7 @@ TEST(StudyStore, CellRoundTripsThroughHdf5) {
   Store& store = s.store;
   CellResult r;
   r.cell = enumerate_cells(cfg)[1];
-  r.status = "unstable";
+  r.status = CellStatus::unstable;
   r.unstable_step = 17;
   r.reason = "unstable at step 17: NaN in the forces";
   r.scalars["temperature_mean"] = 1.0312;
@@ -224,7 +224,7 @@ TEST(StudyStore, AFailingCellIsRecordedAndTheSweepGoesOn) {
   EXPECT_EQ(s.computed, enumerate_cells(cfg).size());
   for (const auto& r : store.load_all())
     if (r.cell.generator == "tea64") {
-      EXPECT_EQ(r.status, "failed");
+      EXPECT_EQ(r.status, CellStatus::failed);
       EXPECT_EQ(r.reason, "engine exploded");
     }
 }

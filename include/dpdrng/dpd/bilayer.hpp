@@ -4,7 +4,7 @@
 // same parameters). It stands in for the paper's POPC bilayer (Okada, Brumby & Yasuoka 2021), whose parameters
 // are not public in full, to ask the same question: does 32TEA(1) change T, P_αα, the tension or the structure?
 //
-//   dpd::BilayerConfig cfg;                              // issue 7's model and box
+//   dpd::BilayerConfig cfg;                              // the model and box above
 //   cfg.generator = rng::validated({"tea32", 1});
 //   cfg.steps = 8000; cfg.equilibrate = 3000;
 //   dpd::BilayerResult r = dpd::run_bilayer(cfg);        // throws InputError for a bad config
@@ -129,7 +129,7 @@ struct BilayerResult {
 
 BilayerResult run_bilayer(const BilayerConfig& cfg, const RunHooks& hooks = {});
 
-// The scalars issue 7 names (temperature_mean, pressure_xx_mean, …, status) plus their errors; arrays (profile,
+// The membrane's scalars (temperature_mean, pressure_xx_mean, …, status) plus their errors; arrays (profile,
 // order by bond) only if `arrays`.
 nlohmann::json to_json(const BilayerResult& r, bool arrays);
 

@@ -1,5 +1,5 @@
 #pragma once
-// The decomposition check (issue 6): does a pair's random number come out the same on both sides of a domain
+// The decomposition check: does a pair's random number come out the same on both sides of a domain
 // boundary when no message carries it? One process emulates a spatial decomposition: the box is cut into
 // n_x × n_y × n_z domains, each bead is owned by the domain its wrapped position falls in, and every pair is
 // evaluated by the owner of each of its beads with the separation that owner can compute:

@@ -23,6 +23,7 @@
 #include "dpdrng/dpd/neighbours.hpp"
 #include "dpdrng/dpd/noise.hpp"
 #include "dpdrng/dpd/pair_forces.hpp"
+#include "dpdrng/dpd/spin.hpp"
 
 namespace dpdrng::dpd {
 
@@ -468,7 +469,7 @@ class PairLoop final : public PairForces {
 
   void await_layer(int z) {
     std::atomic_ref<int> done(done_[z]);
-    while (done.load(std::memory_order_acquire) == 0) __builtin_ia32_pause();
+    while (done.load(std::memory_order_acquire) == 0) cpu_relax();
   }
 
   // One of layer z's two contributors is done; the thread completing the second scatters the layer.

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "dpdrng/study/h5.hpp"
@@ -11,9 +12,16 @@
 
 namespace dpdrng::study {
 
+// How a cell ended. unstable: the run blew up (its observables are null, never 0); disrupted: a lipid left the
+// membrane, the run went to the end and its observables are data; failed: a measurement threw (the reason says
+// which).
+enum class CellStatus { ok, unstable, disrupted, failed };
+std::string_view to_string(CellStatus s);
+CellStatus parse_cell_status(std::string_view text);  // std::runtime_error for a word not listed above
+
 struct CellResult {
   Cell cell;
-  std::string status = "ok";  // ok | unstable | failed (a measurement threw; the reason says which)
+  CellStatus status = CellStatus::ok;
   long unstable_step = -1;
   std::string reason;
   double seconds = 0;  // wall time of the whole cell

@@ -16,8 +16,9 @@ struct GeneratorEntry {
   std::vector<std::string> seedings;   // empty → the study's seedings
 };
 
-// name = "water" (the paper's fluid) or "bilayer" (issue 7's membrane: box, lipids and a_ij fixed by the scene,
-// `a` refused, particles/density must fill its 10 x 10 x 18 box; the other fields default to the scene's values).
+// name = "water" (the paper's fluid) or "bilayer" (the H3(T6)2 membrane of dpd/bilayer.hpp: box, lipids and a_ij
+// fixed by the scene, `a` refused, particles/density must fill its 10 x 10 x 18 box; the other fields default to
+// the scene's values).
 struct SceneParams {
   std::string name = "water";
   int particles = 256;

@@ -1,7 +1,8 @@
 #pragma once
 // A thin RAII layer over the HDF5 C API: only what the study store needs (groups, scalar attributes, 1-D/2-D
 // double datasets, string lists). Every call is checked; failures throw std::runtime_error naming the object.
-// HDF5's own error stack printing is switched off once, so a failed open is our message, not a page of noise.
+// HDF5's own error stack printing is switched off by study::init_libraries(), so a failed open is our message,
+// not a page of noise.
 // The Debian build of HDF5 is not thread-safe: callers serialise all use through h5::lock().
 #include <hdf5.h>
 

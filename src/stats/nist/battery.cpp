@@ -112,12 +112,12 @@ Assessment assess_column(std::span<const std::vector<TestResult>> per_sequence, 
     ++a.bins[bin_of(ps[i])];
     ++ref_bins[bin_of(ref_ps[i])];
   }
-  const double p_hat = 1.0 - alpha, spread = 3.0 * std::sqrt(p_hat * alpha / m);
-  a.proportion_low = p_hat - spread;
-  a.proportion_high = p_hat + spread;
+  const ProportionRange range = proportion_range(alpha, m);
+  a.proportion_low = range.low;
+  a.proportion_high = range.high;
   a.proportion_ok = a.passed >= a.proportion_low * m && a.passed <= a.proportion_high * m;
-  a.reference_min_pass = static_cast<int>((p_hat - spread) * m);
-  a.reference_max_pass = static_cast<int>((p_hat + spread) * m);
+  a.reference_min_pass = static_cast<int>(range.low * m);
+  a.reference_max_pass = static_cast<int>(range.high * m);
   a.reference_proportion_ok =
       a.reference_passed >= a.reference_min_pass && a.reference_passed <= a.reference_max_pass;
   a.uniformity_p = uniformity(a.bins, m / 10.0);
@@ -133,6 +133,11 @@ Assessment assess_column(std::span<const std::vector<TestResult>> per_sequence, 
 }
 
 }  // namespace
+
+ProportionRange proportion_range(double alpha, double m) {
+  const double p_hat = 1.0 - alpha, spread = 3.0 * std::sqrt(p_hat * alpha / m);
+  return {p_hat - spread, p_hat + spread};
+}
 
 std::vector<Assessment> assess(std::span<const std::vector<TestResult>> per_sequence, double alpha) {
   std::vector<Assessment> out;

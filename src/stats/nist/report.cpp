@@ -49,8 +49,7 @@ std::string final_analysis_report(std::span<const Assessment> rows, const std::s
     (exc ? excursion : general) = a.sample_size;
   }
   out += "\n\n- - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - -\n";
-  const double p_hat = 1.0 - alpha;
-  auto min_pass = [&](int m) { return static_cast<int>((p_hat - 3.0 * std::sqrt(p_hat * alpha / m)) * m); };
+  auto min_pass = [&](int m) { return static_cast<int>(proportion_range(alpha, m).low * m); };
   if (general > 0)
     out += fmt("The minimum pass rate for each statistical test with the exception of the\n"
                "random excursion (variant) test is approximately = %d for a\nsample size = %d binary sequences.\n\n",

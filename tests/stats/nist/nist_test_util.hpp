@@ -1,6 +1,5 @@
 #pragma once
 // Shared by the SP800-22 tests: the Appendix B data sets, built with MPFR instead of shipping data files.
-#include <gsl/gsl_errno.h>
 #include <mpfr.h>
 
 #include <cstdlib>
@@ -49,8 +48,5 @@ inline bool small_scale() {
   const char* v = std::getenv("DPDRNG_TEST_SCALE");
   return v && std::string_view(v) == "small";
 }
-
-// GSL's default handler aborts; the library checks every status itself.
-inline const bool kGslHandlerOff = (gsl_set_error_handler_off(), true);
 
 }  // namespace dpdrng::stats::nist::testing_

@@ -62,7 +62,7 @@ TEST(NistParameters, LinearComplexityBlocksShorterThan12DoNotFollowTheTable) {
   EXPECT_FALSE(check_linear_complexity(12));
   EXPECT_TRUE(check_linear_complexity(11));
   EXPECT_TRUE(check_linear_complexity(1));
-  // M = 1 used to give p = 0 for every sequence: every block's class is 3 or 4.
+  // M = 1: every block's class is 3 or 4, which must not give p = 0 for every sequence.
   EXPECT_THROW(linear_complexity(random_bits(5000, 1), 1), std::invalid_argument);
 }
 

@@ -24,6 +24,14 @@ std::vector<TestResult> run_battery(const BitSequence& s, const Parameters& p = 
 std::vector<std::vector<TestResult>> run_battery(std::span<const BitSequence> sequences, const Parameters& p = {},
                                                  std::span<const Test> tests = {});
 
+// SP800-22 4.2.1: the proportion of m sequences passing at level alpha must lie within
+// (1-alpha) -+ 3 sqrt(alpha(1-alpha)/m). The one computation of that range, for the battery, its report and the
+// study's.
+struct ProportionRange {
+  double low, high;
+};
+ProportionRange proportion_range(double alpha, double m);
+
 // Second level for one P-value column (a test and variant) over m sequences (SP800-22 4.2).
 struct Assessment {
   Test test{};

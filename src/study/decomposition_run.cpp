@@ -1,4 +1,4 @@
-#include "dpdrng/dpd/decomposition_run.hpp"
+#include "dpdrng/study/decomposition_run.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -13,7 +13,9 @@
 #include "dpdrng/stats/correlation.hpp"
 #include "dpdrng/stats/ttest.hpp"
 
-namespace dpdrng::dpd {
+namespace dpdrng::study {
+
+using namespace dpdrng::dpd;
 
 namespace {
 
@@ -244,4 +246,4 @@ nlohmann::json to_json(const DecompResult& r) {
   return j;
 }
 
-}  // namespace dpdrng::dpd
+}  // namespace dpdrng::study

@@ -1,41 +1,63 @@
-// `dpdrng decompose` end to end and the sweep config it reads.
+// The decomposition check's runs, `dpdrng decompose` end to end, and the sweep config it reads.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "dpdrng/common/error.hpp"
-#include "dpdrng/dpd/decomposition_sweep.hpp"
+#include "dpdrng/study/decomposition_sweep.hpp"
+#include "../cli/run_cli.hpp"
+#include "../dpd/scale.hpp"
 
-namespace dpdrng::dpd {
+namespace dpdrng::study {
 namespace {
 
-struct CliRun {
-  int code = -1;
-  std::string out;
-};
+using namespace dpdrng::dpd;
 
-CliRun run_cli(const std::string& args) {
-  CliRun r;
-  const std::string cmd = std::string("\"") + DPDRNG_CLI_PATH + "\" " + args + " 2>/dev/null";
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return r;
-  char buf[4096];
-  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) r.out.append(buf, n);
-  const int status = pclose(p);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+DecompNoise noise(const std::string& gen, int rounds, const std::string& seeding) {
+  DecompNoise n;
+  n.generator = rng::validated({gen, rounds});
+  n.seeding = parse_decomp_seeding(seeding);
+  return n;
+}
+
+TEST(DecompositionRun, MomentumIsConservedUndecomposedAndDriftsWithDistanceSeeding) {
+  DecompConfig c;
+  c.water.steps = test_scale::scaled(200, 40);
+  c.water.equilibrate = 10;
+  c.chi2_every = 0;
+  c.ttest_pairs = 0;
+  c.noise = noise("tea32", 8, "distance");
+  c.domains = parse_domains("2,2,1");
+  const DecompResult d = run_decomposition(c);
+  ASSERT_TRUE(d.has_reference);
+  EXPECT_EQ(d.decomposed.status, "ok");
+  EXPECT_LT(d.reference.momentum_drift, 1e-12);
+  EXPECT_EQ(d.reference.boundary.boundary, 0u);
+  EXPECT_GT(d.decomposed.boundary.zeta_mismatch, 0u);
+  EXPECT_GT(d.decomposed.momentum_drift, 1e-3);
+
+  c.noise = noise("tea32", 8, "pair-step");
+  c.reference = false;
+  const DecompResult p = run_decomposition(c);
+  EXPECT_EQ(p.decomposed.boundary.zeta_mismatch, 0u);
+  EXPECT_GT(p.decomposed.boundary.separation_mismatch, 0u);
+  EXPECT_LT(p.decomposed.momentum_drift, 1e-10);
+}
+
+TEST(DecompositionRun, RejectsBadConfigs) {
+  DecompConfig c;
+  c.ttest_pairs = 300;
+  EXPECT_THROW(run_decomposition(c), InputError);
 }
 
 TEST(DecomposeCli, PairStepAgreesAndDistanceDoesNot) {
   const std::string common = "decompose --domains 2,2,1 -g tea32 -r 8 --steps 20 --equilibrate 5 --chi2-every 5 "
                              "--ttest-pairs 2 --json --seeding ";
-  const CliRun p = run_cli(common + "pair-step");
+  const cli_test::Result p = cli_test::run(common + "pair-step");
   ASSERT_EQ(p.code, 0) << p.out;
   const auto jp = nlohmann::json::parse(p.out);
   EXPECT_EQ(jp["domains"], "2x2x1");
@@ -44,7 +66,7 @@ TEST(DecomposeCli, PairStepAgreesAndDistanceDoesNot) {
   EXPECT_EQ(jp["decomposed"]["boundary"]["zeta_mismatches"], 0);
   EXPECT_EQ(jp["randomness"]["chi2_tests"], 3);
 
-  const CliRun d = run_cli(common + "distance --no-reference");
+  const cli_test::Result d = cli_test::run(common + "distance --no-reference");
   ASSERT_EQ(d.code, 0) << d.out;
   const auto jd = nlohmann::json::parse(d.out);
   EXPECT_GT(jd["decomposed"]["boundary"]["zeta_mismatches"].get<int>(), 0);
@@ -52,11 +74,11 @@ TEST(DecomposeCli, PairStepAgreesAndDistanceDoesNot) {
 }
 
 TEST(DecomposeCli, BadInputExitsWithTwo) {
-  EXPECT_EQ(run_cli("decompose --domains 0 --steps 20 --equilibrate 5").code, 2);
-  EXPECT_EQ(run_cli("decompose --seeding grid:3 --steps 20 --equilibrate 5").code, 2);
-  EXPECT_EQ(run_cli("decompose -g mt19937 --steps 20 --equilibrate 5").code, 2);
-  EXPECT_EQ(run_cli("decompose --scene bilayer").code, 2);
-  EXPECT_EQ(run_cli("decompose --study /nonexistent/decomposition.toml").code, 2);
+  EXPECT_EQ(cli_test::run("decompose --domains 0 --steps 20 --equilibrate 5").code, 2);
+  EXPECT_EQ(cli_test::run("decompose --seeding grid:3 --steps 20 --equilibrate 5").code, 2);
+  EXPECT_EQ(cli_test::run("decompose -g mt19937 --steps 20 --equilibrate 5").code, 2);
+  EXPECT_EQ(cli_test::run("decompose --scene bilayer").code, 2);
+  EXPECT_EQ(cli_test::run("decompose --study /nonexistent/decomposition.toml").code, 2);
 }
 
 const char* kSweep = R"(
@@ -118,4 +140,4 @@ TEST(DecompositionSweep, RunsAndWritesItsTable) {
 }
 
 }  // namespace
-}  // namespace dpdrng::dpd
+}  // namespace dpdrng::study

@@ -7,17 +7,17 @@
 #include <string>
 #include <vector>
 
-#include "dpdrng/dpd/decomposition_run.hpp"
+#include "dpdrng/study/decomposition_run.hpp"
 
-namespace dpdrng::dpd {
+namespace dpdrng::study {
 
 struct DecompSweep {
   std::string name = "decomposition";
   std::string description;
   std::vector<rng::GeneratorSpec> generators;  // one entry per (name, rounds)
-  std::vector<DecompSeeding> seedings;
+  std::vector<dpd::DecompSeeding> seedings;
   std::vector<rng::Distribution> distributions{rng::Distribution::gauss};
-  std::vector<DomainGrid> domains;
+  std::vector<dpd::DomainGrid> domains;
   DecompConfig base;  // scene, steps, tests
 };
 
@@ -44,4 +44,4 @@ std::vector<DecompChart> decomp_charts(const std::vector<DecompResult>& rows);
 std::string write_decomp_outputs(const DecompSweep& sweep, const std::vector<DecompResult>& rows,
                                  const std::string& dir, std::ostream* log);
 
-}  // namespace dpdrng::dpd
+}  // namespace dpdrng::study

@@ -1,4 +1,4 @@
-#include "dpdrng/dpd/decomposition_sweep.hpp"
+#include "dpdrng/study/decomposition_sweep.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +13,9 @@
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/common/output.hpp"
 
-namespace dpdrng::dpd {
+namespace dpdrng::study {
+
+using namespace dpdrng::dpd;
 
 std::vector<DecompResult> run_decomp_sweep(const DecompSweep& sw, const SweepProgress& progress) {
   std::vector<DecompResult> out;
@@ -184,4 +186,4 @@ std::string write_decomp_outputs(const DecompSweep& sw, const std::vector<Decomp
   return md;
 }
 
-}  // namespace dpdrng::dpd
+}  // namespace dpdrng::study

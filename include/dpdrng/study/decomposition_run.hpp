@@ -1,16 +1,17 @@
 #pragma once
 // A decomposition check of the water scene, from a config to a result with no I/O (the CLI and the sweep call
-// it). Two runs from the same start: the undecomposed reference (one domain per axis: minimum images, the
-// engine's numbers) and the decomposed run, both driven by the engine's integrator with DecomposedForces as
+// it). The engine supplies the decomposed forces (dpd/decomposition.hpp); the runs and the tests of their noise
+// are study work. Two runs from the same start: the undecomposed reference (one domain per axis: minimum images,
+// the engine's numbers) and the decomposed run, both driven by the engine's integrator with DecomposedForces as
 // the force callback. The boundary bookkeeping is taken on the first force evaluation (a snapshot) and summed
 // over the decomposed run; the reference run's noise feeds the statistical tests (what a seeding costs in
 // randomness does not depend on the decomposition).
 //
-//   dpd::DecompConfig c;
+//   study::DecompConfig c;
 //   c.domains = dpd::parse_domains("2,2,1");
 //   c.noise.generator = rng::validated({"tea32", 1});
 //   c.noise.seeding = dpd::parse_decomp_seeding("grid:32");
-//   dpd::DecompResult r = dpd::run_decomposition(c);
+//   study::DecompResult r = study::run_decomposition(c);
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -19,14 +20,14 @@
 #include "dpdrng/dpd/decomposition.hpp"
 #include "dpdrng/dpd/result.hpp"
 
-namespace dpdrng::dpd {
+namespace dpdrng::study {
 
 struct DecompConfig {
   // Scene and integrator (particles, density, a, rc, kT, gamma, lambda, dt, steps, equilibrate, init_seed,
   // sample_every, max_temperature, min_distance). Its generator/seeding/pairs fields are not used.
-  WaterConfig water;
-  DomainGrid domains{{2, 1, 1}};
-  DecompNoise noise;
+  dpd::WaterConfig water;
+  dpd::DomainGrid domains{{2, 1, 1}};
+  dpd::DecompNoise noise;
   bool reference = true;   // also run undecomposed, for the observables and the randomness tests
   int chi2_every = 100;    // χ² on every pair's word at every chi2_every-th production step (0 = none)
   int ttest_pairs = 32;    // pairs (i, i+1), i = 0.., whose word series get the lag-1 t-test (0 = none)
@@ -39,12 +40,12 @@ struct DecompConfig {
 struct DecompRun {
   std::string status = "ok";
   std::int64_t steps_done = 0;
-  Stat temperature, pressure;
+  dpd::Stat temperature, pressure;
   double diffusion = 0, diffusion_sem = 0;
   double momentum_drift = 0;        // max over steps of |P(t) − P(0)| per bead (as run_water)
   double momentum_final = 0;        // |P(end) − P(0)| per bead
   double com_kinetic_share = 0;     // ½ N |v_com|² / (½ Σ v²) at the end: the heat the drift put in
-  BoundaryStats boundary;           // summed over the run's force evaluations
+  dpd::BoundaryStats boundary;           // summed over the run's force evaluations
   double seconds = 0;
 };
 
@@ -66,7 +67,7 @@ struct DecompResult {
   std::string feed = "halves";
   std::size_t particles = 0;
   double box_length = 0;
-  BoundaryStats snapshot;  // the first force evaluation of the decomposed run (the initial configuration)
+  dpd::BoundaryStats snapshot;  // the first force evaluation of the decomposed run (the initial configuration)
   DecompRun decomposed;
   bool has_reference = false;
   DecompRun reference;
@@ -75,7 +76,7 @@ struct DecompResult {
 
 DecompResult run_decomposition(const DecompConfig& cfg);
 
-nlohmann::json to_json(const BoundaryStats& b);
+nlohmann::json to_json(const dpd::BoundaryStats& b);
 nlohmann::json to_json(const DecompResult& r);
 
-}  // namespace dpdrng::dpd
+}  // namespace dpdrng::study
