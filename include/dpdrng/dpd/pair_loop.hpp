@@ -145,13 +145,14 @@ class PairLoop final : public PairForces {
     double fx = 0, fy = 0, fz = 0, w0 = 0, w1 = 0, w2 = 0, c0 = 0, c1 = 0, c2 = 0;
     double min_r2 = k_.rc2();
     if (row.rec.size() < m) row.rec.resize(m);
-    noise_.zetas(sc.blk.data(), sc.blk2.data(), sc.zeta.data(), m);
+    // The ζ = 0 baseline skips the pass and keeps the constant, as the benchmark's floor must.
+    if constexpr (!Noise::kZero) noise_.zetas(sc.blk.data(), sc.blk2.data(), sc.zeta.data(), m);
     row.zeta = ZetaSums{};
     if (c.tap_zeta) row.zeta.add(sc.zeta.data(), m);
     for (std::size_t t = 0; t < m; ++t) {
       const std::uint32_t j = sc.j[t];
       const double dx = sc.dx[t], dy = sc.dy[t], dz = sc.dz[t], r2 = sc.r2[t];
-      const double zeta = sc.zeta[t];
+      const double zeta = Noise::kZero ? 0.0 : sc.zeta[t];
       const PairForce pf = DpdKernel::evaluate(r2, dx, dy, dz, c.v.vx[j] - vxi, c.v.vy[j] - vyi, c.v.vz[j] - vzi,
                                                arow[s.type[j]], zeta, rc, gamma, sig);
       const double gx = pf.s * dx, gy = pf.s * dy, gz = pf.s * dz;
