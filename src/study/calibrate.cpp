@@ -99,11 +99,11 @@ NullRow null_row(const StudyConfig& pool, const std::vector<CellResult>& cells, 
 double temperature_error(const std::vector<CellResult>& cells, const std::string& generator) {
   std::map<int, double> ref;
   for (const auto& c : cells)
-    if (c.cell.reference && c.status == "ok") ref[c.cell.replica] = c.scalar("temperature_mean", NAN);
+    if (c.cell.reference && c.status == CellStatus::ok) ref[c.cell.replica] = c.scalar("temperature_mean", NAN);
   double s = 0;
   std::size_t n = 0;
   for (const auto& c : cells) {
-    if (c.cell.generator != generator || c.status != "ok" || !ref.count(c.cell.replica)) continue;
+    if (c.cell.generator != generator || c.status != CellStatus::ok || !ref.count(c.cell.replica)) continue;
     const double t = c.scalar("temperature_mean", NAN), r = ref[c.cell.replica];
     if (std::isfinite(t) && std::isfinite(r) && r != 0) s += (t - r) / r, ++n;
   }
@@ -251,7 +251,7 @@ Calibration calibrate(const StudyConfig& config, const CalibrationPlan& plan, St
       r = measure(todo[k], pool, threads);
     } catch (const std::exception& e) {
       r = CellResult{};
-      r.status = "failed";
+      r.status = CellStatus::failed;
       r.reason = e.what();
     }
     r.cell = todo[k];
@@ -261,7 +261,7 @@ Calibration calibrate(const StudyConfig& config, const CalibrationPlan& plan, St
     if (progress) {
       char line[256];
       std::snprintf(line, sizeof line, "[calibrate] %zu/%zu  %-28s rep%03d %5.1fs %s  ETA %s\n", k + 1, todo.size(),
-                    todo[k].label().c_str(), todo[k].replica, r.seconds, r.status.c_str(),
+                    todo[k].label().c_str(), todo[k].replica, r.seconds, std::string(to_string(r.status)).c_str(),
                     duration(busy / double(k + 1) * double(todo.size() - k - 1)).c_str());
       *progress << line << std::flush;
     }
@@ -274,7 +274,7 @@ Calibration calibrate(const StudyConfig& config, const CalibrationPlan& plan, St
                       "): delete it and run calibrate again");
   for (const auto& c : cells) {
     out.cell_seconds += c.seconds;
-    out.failed += c.status == "failed";
+    out.failed += c.status == CellStatus::failed;
   }
   out.config_name = config.name;
   out.scene = calibration_key(config);
