@@ -73,15 +73,19 @@ Chi2Result chi2_uniform(std::span<const double> u01, const Chi2Options& options)
   }
 
   res.counts = histogram(u01, res.bins);
-  double a = 0.0;
-  for (const std::uint64_t c : res.counts) {
-    const double d = static_cast<double>(c) - res.expected;
-    a += d * d;
-  }
-  res.statistic = a / res.expected;
+  res.statistic = chi2_statistic_equal(res.counts, res.expected);
   res.p_value = chi2_upper_tail(res.statistic, res.dof);
   res.verdict = verdict_at(res.p_value, res.alpha);
   return res;
+}
+
+double chi2_statistic_equal(std::span<const std::uint64_t> counts, double expected) {
+  double a = 0.0;
+  for (const std::uint64_t c : counts) {
+    const double d = static_cast<double>(c) - expected;
+    a += d * d;
+  }
+  return a / expected;
 }
 
 }  // namespace dpdrng::stats

@@ -34,12 +34,7 @@ Chi2Grid chi2_2d(std::span<const double> u1, std::span<const double> u2, int bin
                std::to_string(r.n) + " pairs, " + std::to_string(k * k) + " cells)";
     return r;
   }
-  double a = 0;
-  for (const std::uint64_t c : r.counts) {
-    const double d = static_cast<double>(c) - r.expected;
-    a += d * d;
-  }
-  r.statistic = a / r.expected;
+  r.statistic = chi2_statistic_equal(r.counts, r.expected);
   r.p_value = chi2_upper_tail(r.statistic, r.dof);
   r.verdict = verdict_at(r.p_value, alpha);
   return r;

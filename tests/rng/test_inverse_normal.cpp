@@ -16,19 +16,11 @@
 #include <vector>
 
 #include "dpdrng/rng/inverse_normal.hpp"
+#include "mpfr_value.hpp"
 
 using namespace dpdrng::rng;
 
 namespace {
-
-class Mp {
- public:
-  Mp() { mpfr_init2(v, 160); }
-  ~Mp() { mpfr_clear(v); }
-  Mp(const Mp&) = delete;
-  Mp& operator=(const Mp&) = delete;
-  mpfr_t v;
-};
 
 // Φ⁻¹(u) to 160 bits: x > 0 with erfc(x/√2)/2 = p = min(u, 1 − u) (exact in MPFR), by Newton steps
 // x ← x + (erfc(x/√2)/2 − p)·√(2π)·exp(x²/2) from a start good to ~1e-15, each step doubling the digits.

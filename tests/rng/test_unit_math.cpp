@@ -19,19 +19,11 @@
 
 #include "dpdrng/rng/distribution.hpp"
 #include "dpdrng/rng/simd.hpp"
+#include "mpfr_value.hpp"
 
 using namespace dpdrng::rng;
 
 namespace {
-
-class Mp {
- public:
-  Mp() { mpfr_init2(v, 160); }
-  ~Mp() { mpfr_clear(v); }
-  Mp(const Mp&) = delete;
-  Mp& operator=(const Mp&) = delete;
-  mpfr_t v;
-};
 
 // |got − ref| in units of the last place of ref at a precision of `bits` (53: double, 24: float), i.e.
 // ulp = 2^(e−bits) for ref in [2^(e−1), 2^e).

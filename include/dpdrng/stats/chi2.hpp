@@ -41,5 +41,7 @@ Chi2Result chi2_uniform(std::span<const double> u01, const Chi2Options& options 
 
 // Upper tail of χ²(dof) through GSL's regularised incomplete gamma function Q(dof/2, x/2).
 double chi2_upper_tail(double x, int dof);
+// Pearson's statistic Σ (c − e)² / e for counts that all expect the same e.
+double chi2_statistic_equal(std::span<const std::uint64_t> counts, double expected);
 
 }  // namespace dpdrng::stats
