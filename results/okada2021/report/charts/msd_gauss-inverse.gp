@@ -1,0 +1,16 @@
+# Mean squared displacement (gauss-inverse)
+# Rendered by: gnuplot -e "set terminal svg; set output 'x.svg'" msd_gauss-inverse.gp
+set title "Mean squared displacement (gauss-inverse)" noenhanced
+set xlabel "τ"
+set ylabel "MSD"
+set grid
+set key outside right top noenhanced
+set datafile missing "nan"
+set logscale x 2
+set logscale y
+set xrange [0.8:*]
+plot "data/msd_gauss-inverse_0.dat" using 1:2 with lines lw 4 lc rgb 'black' title "mt19937 (reference, 3 replicas)", \
+     "data/msd_gauss-inverse_1.dat" using 1:2 with lines lw 2 title "tea32(1) distance", \
+     "data/msd_gauss-inverse_2.dat" using 1:2 with lines lw 2 dt 3 title "tea32(32) distance", \
+     "data/msd_gauss-inverse_3.dat" using 1:2 with lines lw 2 title "tea64(1) distance", \
+     "data/msd_gauss-inverse_4.dat" using 1:2 with lines lw 2 dt 3 title "tea64(32) distance"

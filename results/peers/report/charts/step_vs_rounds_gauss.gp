@@ -1,0 +1,24 @@
+# Time per DPD step (gauss)
+# Rendered by: gnuplot -e "set terminal svg; set output 'x.svg'" step_vs_rounds_gauss.gp
+set title "Time per DPD step (gauss)" noenhanced
+set xlabel "rounds"
+set ylabel "ms per step"
+set grid
+set key outside right top noenhanced
+set datafile missing "nan"
+set logscale x 2
+set xrange [0.8:*]
+set arrow from graph 0, first 0.408428 to graph 1, first 0.408428 nohead dt 2 lw 2 lc rgb 'black'
+set label "mt19937" at graph 0.01, first 0.408428 offset 0,0.6 tc rgb 'black'
+plot "data/step_vs_rounds_gauss_0.dat" using 1:2 with linespoints lw 2 pt 7 title "philox4x32 distance", \
+     "data/step_vs_rounds_gauss_1.dat" using 1:2 with linespoints lw 2 pt 7 title "philox4x32 pair-step", \
+     "data/step_vs_rounds_gauss_2.dat" using 1:2 with linespoints lw 2 pt 7 title "saru distance", \
+     "data/step_vs_rounds_gauss_3.dat" using 1:2 with linespoints lw 2 pt 7 title "saru pair-step", \
+     "data/step_vs_rounds_gauss_4.dat" using 1:2 with linespoints lw 2 pt 7 title "splitmix64 distance", \
+     "data/step_vs_rounds_gauss_5.dat" using 1:2 with linespoints lw 2 pt 7 title "splitmix64 pair-step", \
+     "data/step_vs_rounds_gauss_6.dat" using 1:2 with linespoints lw 2 pt 7 title "tea32 distance", \
+     "data/step_vs_rounds_gauss_7.dat" using 1:2 with linespoints lw 2 pt 7 title "tea32 pair-step", \
+     "data/step_vs_rounds_gauss_8.dat" using 1:2 with linespoints lw 2 pt 7 title "tea64 distance", \
+     "data/step_vs_rounds_gauss_9.dat" using 1:2 with linespoints lw 2 pt 7 title "tea64 pair-step", \
+     "data/step_vs_rounds_gauss_10.dat" using 1:2 with linespoints lw 2 pt 7 title "threefry2x64 distance", \
+     "data/step_vs_rounds_gauss_11.dat" using 1:2 with linespoints lw 2 pt 7 title "threefry2x64 pair-step"
