@@ -18,6 +18,7 @@
 #include "dpdrng/study/runner.hpp"
 #include "dpdrng/study/store.hpp"
 #include "quantities.hpp"
+#include "../temp_dir.hpp"
 
 namespace fs = std::filesystem;
 using namespace dpdrng;
@@ -26,15 +27,6 @@ using namespace dpdrng::golden;
 namespace {
 
 std::string source(const std::string& file) { return std::string(DPDRNG_SOURCE_DIR) + "/tests/golden/" + file; }
-
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    std::string tmpl = (fs::temp_directory_path() / "dpdrng-golden-XXXXXX").string();
-    path = mkdtemp(tmpl.data());
-  }
-  ~TempDir() { fs::remove_all(path); }
-};
 
 // Wall-clock figures: cell seconds and the cost.* timings (the pair count per step is a result, kept).
 bool timing_attribute(const std::string& name) {

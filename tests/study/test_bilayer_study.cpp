@@ -19,6 +19,7 @@
 #include "dpdrng/study/report.hpp"
 #include "dpdrng/study/store.hpp"
 #include "config_text.hpp"
+#include "../temp_dir.hpp"
 
 using namespace dpdrng::study;
 namespace fs = std::filesystem;
@@ -52,15 +53,6 @@ std::string read(const fs::path& p) {
   std::ifstream in(p);
   return std::string(std::istreambuf_iterator<char>(in), {});
 }
-
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    std::string tmpl = (fs::temp_directory_path() / "dpdrng-bilayer-study-XXXXXX").string();
-    path = mkdtemp(tmpl.data());
-  }
-  ~TempDir() { fs::remove_all(path); }
-};
 
 // Built piecewise: GCC 12 warns (-Wrestrict, a false positive) on "'" + path.string().
 std::string quote(const fs::path& p) {

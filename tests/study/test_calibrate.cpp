@@ -13,21 +13,13 @@
 #include "dpdrng/study/calibrate.hpp"
 #include "dpdrng/study/report.hpp"
 #include "fake_measure.hpp"
+#include "../temp_dir.hpp"
 
 using namespace dpdrng;
 using namespace dpdrng::study;
 namespace fs = std::filesystem;
 
 namespace {
-
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    std::string tmpl = (fs::temp_directory_path() / "dpdrng-calib-XXXXXX").string();
-    path = mkdtemp(tmpl.data());
-  }
-  ~TempDir() { fs::remove_all(path); }
-};
 
 // The fake engine with the physics of a variance defect: the thermostat's kT scales with σ², so T with 1 + ε.
 struct DefectAwareFake {

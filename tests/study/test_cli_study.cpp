@@ -16,20 +16,12 @@
 
 #include "config_text.hpp"
 #include "dpdrng/study/store.hpp"
+#include "../temp_dir.hpp"
 
 using namespace dpdrng::study;
 namespace fs = std::filesystem;
 
 namespace {
-
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    std::string tmpl = (fs::temp_directory_path() / "dpdrng-cli-study-XXXXXX").string();
-    path = mkdtemp(tmpl.data());
-  }
-  ~TempDir() { fs::remove_all(path); }
-};
 
 // A real (engine-backed) study small enough for a unit test.
 const std::string kTiny = R"(

@@ -14,6 +14,7 @@
 #include "dpdrng/study/runner.hpp"
 #include "dpdrng/study/store.hpp"
 #include "fake_measure.hpp"
+#include "../temp_dir.hpp"
 
 using namespace dpdrng::study;
 namespace fs = std::filesystem;
@@ -21,15 +22,6 @@ namespace fs = std::filesystem;
 namespace {
 
 const std::string kConfig = fake::small_config_toml("store-test", 3);
-
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    std::string tmpl = (fs::temp_directory_path() / "dpdrng-study-XXXXXX").string();
-    path = mkdtemp(tmpl.data());
-  }
-  ~TempDir() { fs::remove_all(path); }
-};
 
 // A fresh store of kConfig in its own directory.
 struct OpenStore {
