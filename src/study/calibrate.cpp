@@ -202,6 +202,7 @@ StudyConfig calibration_pool(const StudyConfig& config, const CalibrationPlan& p
   p.name = config.name + "-calibration";
   p.distributions = {config.distributions.front()};
   p.seedings = {config.seedings.front()};
+  p.feeds = {config.feeds.front()};  // good generators do not depend on the feed; more feeds only multiply cells
   p.scene.dt = {config.scene.dt.front()};
   p.tests.nist_generators.clear();
   p.generators = kGood;

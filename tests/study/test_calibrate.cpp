@@ -164,3 +164,13 @@ TEST(Calibrate, RefusesBadPlans) {
   EXPECT_EQ(pool.generators.back().name, "defect:lag1=0.1");
   EXPECT_EQ(pool.generators.back().seedings, std::vector<std::string>{"pair-step"});
 }
+
+TEST(Calibrate, PoolRunsTheFirstFeedOnly) {
+  std::string toml = fake::small_config_toml("calib-feeds", 3);
+  toml.replace(toml.find("[[sweep.generator]]"), 0, "feeds = [\"blocks\", \"halves\"]\n");
+  const StudyConfig cfg = parse_config(toml, "c.toml");
+  ASSERT_EQ(cfg.feeds.size(), 2u);
+  const StudyConfig pool = calibration_pool(cfg, small_plan());
+  EXPECT_EQ(pool.feeds, std::vector<std::string>{"blocks"});
+  for (const auto& c : enumerate_cells(pool)) EXPECT_EQ(c.feed, "blocks");
+}
