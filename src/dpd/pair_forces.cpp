@@ -36,17 +36,21 @@ std::unique_ptr<PairForces> make_pair_forces(const WaterConfig& in, const DpdKer
   cfg.generator = rng::validated(in.generator);
   if (cfg.threads <= 0) cfg.threads = omp_get_max_threads();
   const bool gauss = cfg.distribution == rng::Distribution::gauss;
-  if (cfg.noise_override != NoiseOverride::off || cfg.generator.name == "mt19937")
+  const rng::Family family = rng::family_of(cfg.generator.name);
+  if (cfg.noise_override != NoiseOverride::off || family == rng::Family::mt19937)
     return gauss ? baseline_or_stream<rng::Distribution::gauss>(cfg, kernel, n)
                  : baseline_or_stream<rng::Distribution::uniform>(cfg, kernel, n);
-  const std::string& g = cfg.generator.name;
-  if (g == "tea32") return detail::make_tea32(cfg, kernel, n);
-  if (g == "tea64") return detail::make_tea64(cfg, kernel, n);
-  if (g == "philox4x32" || g == "threefry2x64") return detail::make_random123(cfg, kernel, n);
-  if (g == "splitmix64") return detail::make_splitmix(cfg, kernel, n);
-  if (g == "saru") return detail::make_saru(cfg, kernel, n);
-  if (rng::is_defect(g)) return detail::make_defect(cfg, kernel, n);
-  rng::throw_not_keyed_hash(g);
+  switch (family) {
+    case rng::Family::tea32: return detail::make_tea32(cfg, kernel, n);
+    case rng::Family::tea64: return detail::make_tea64(cfg, kernel, n);
+    case rng::Family::philox4x32:
+    case rng::Family::threefry2x64: return detail::make_random123(cfg, kernel, n);
+    case rng::Family::splitmix64: return detail::make_splitmix(cfg, kernel, n);
+    case rng::Family::saru: return detail::make_saru(cfg, kernel, n);
+    case rng::Family::defect: return detail::make_defect(cfg, kernel, n);
+    case rng::Family::mt19937: break;
+  }
+  rng::throw_not_keyed_hash(cfg.generator.name);
 }
 
 }  // namespace dpdrng::dpd

@@ -1,7 +1,7 @@
 #pragma once
 // Internal to src/dpd: the pair-loop factory split by generator family, one translation unit each, because
 // each family instantiates the whole pair loop for every round count × seeding × distribution, and one file
-// holding all of them took minutes to compile. The round lists mirror rng::with_hash (registry.hpp).
+// holding all of them took minutes to compile. The round lists are rng::compiled_rounds (registry.hpp).
 #include <memory>
 
 #include "dpdrng/dpd/pair_loop.hpp"

@@ -3,7 +3,7 @@
 namespace dpdrng::dpd::detail {
 
 std::unique_ptr<PairForces> make_tea32(const WaterConfig& cfg, const DpdKernel& kernel, std::size_t n) {
-  return rng::detail::dispatch_rounds<rng::Tea32, 1, 2, 3, 4, 5, 6, 8, 16, 32>(
+  return rng::with_family_hash<rng::Family::tea32>(
       cfg.generator, [&](const auto& gen) { return make_for_generator(gen, cfg, kernel, n); });
 }
 

@@ -142,12 +142,12 @@ void fill_noise_hash(const G& g, Distribution dist, std::uint64_t start, std::ui
 }  // namespace
 
 int words_per_call(const GeneratorSpec& spec) {
-  if (spec.name == "mt19937") return 1;
+  if (family_of(spec.name) == Family::mt19937) return 1;
   return with_hash(spec, [](const auto& g) { return std::decay_t<decltype(g)>::kWords; });
 }
 
 void fill_stream(const GeneratorSpec& spec, std::uint64_t start, std::uint64_t offset, std::span<std::uint64_t> out) {
-  if (spec.name == "mt19937") {
+  if (family_of(spec.name) == Family::mt19937) {
     Mt19937 mt(start);
     mt.engine.discard(2 * offset);
     for (auto& w : out) w = mt.next64();
@@ -168,7 +168,7 @@ void fill_unit(const GeneratorSpec& spec, std::uint64_t start, std::uint64_t off
 
 void fill_noise(const GeneratorSpec& spec, Distribution dist, std::uint64_t start, std::uint64_t first_call,
                 std::span<double> out) {
-  if (spec.name == "mt19937") {
+  if (family_of(spec.name) == Family::mt19937) {
     Mt19937 mt(start);
     mt.engine.discard(2 * first_call);
     std::array<std::uint64_t, kChunkCalls> words;

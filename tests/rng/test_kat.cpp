@@ -187,7 +187,7 @@ TEST(KatRandom123, WrappersMatchRandom123Functors) {
 TEST(KatSplitMix64, SeedFromTheReferenceImplementation) {
   constexpr std::uint64_t kExpect[] = {6457827717110365317ull, 3203168211198807973ull, 9817491932198370423ull,
                                        4593380528125082431ull, 16408922859458223821ull};
-  const SplitMix64<1> g;
+  const SplitMix64 g;
   for (std::uint64_t i = 0; i < 5; ++i) EXPECT_EQ(g.stream(1234567, i)[0], kExpect[i]) << "output " << i;
 }
 

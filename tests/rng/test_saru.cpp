@@ -62,7 +62,7 @@ TEST(Saru, MatchesIndependentTranscription) {
 }
 
 TEST(Saru, CounterModeSeedsWithTheCountersHalves) {
-  const Saru<1> g;
+  const Saru g;
   EXPECT_EQ(g.stream(0, 0)[0], 0x9b57eeb9b41a5db3ull);
   EXPECT_EQ(g.stream(0x9abcdef012345670ull, 8)[0], 0x3127d1c457686cb5ull);
 }
@@ -70,7 +70,7 @@ TEST(Saru, CounterModeSeedsWithTheCountersHalves) {
 // HOOMD v2: Saru(min(i, j), max(i, j), seed + timestep). Symmetric in i, j; the seed and the step enter only
 // through their 32-bit sum (so runs whose seed differs by k are the same runs shifted by k steps).
 TEST(Saru, PairSeedingIsHoomds) {
-  const Saru<1> g;
+  const Saru g;
   EXPECT_EQ(g.pair_step(3, 17, 100, 7)[0], g.pair_step(17, 3, 100, 7)[0]);
   EXPECT_EQ(g.pair_step(3, 17, 100, 7)[0], sd::two_outputs(sd::seed3(3, 17, 107)));
   EXPECT_EQ(g.pair_step(3, 17, 100, 7)[0], g.pair_step(3, 17, 7, 100)[0]);
@@ -100,7 +100,7 @@ TEST(Saru, StreamsPassByteChiSquare) {
   std::vector<std::uint64_t> words(1 << 18);
   fill_stream(s, 0, 0, words);  // consecutive counters: seeds differ in a few low bits
   expect_uniform_bytes(words, "counter stream");
-  const Saru<1> g;
+  const Saru g;
   std::size_t k = 0;
   for (std::uint32_t i = 0; i < 512; ++i)
     for (std::uint32_t j = i + 1; j < i + 513; ++j) words[k++] = g.pair_step(i, j, 1000, 1)[0];

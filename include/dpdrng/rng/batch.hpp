@@ -135,8 +135,7 @@ void stream_batch(const Tea64<R>& g, std::uint64_t start, std::uint64_t first, s
 }
 
 // SplitMix64's published stream: out[c] = mix(start + (first + c + 1)·γ).
-template <int R>
-void stream_batch(const SplitMix64<R>&, std::uint64_t start, std::uint64_t first, std::span<std::uint64_t> out) {
+inline void stream_batch(const SplitMix64&, std::uint64_t start, std::uint64_t first, std::span<std::uint64_t> out) {
   using batch_detail::u64x8;
   constexpr u64x8 iota{1, 2, 3, 4, 5, 6, 7, 8};
   std::size_t c = 0;

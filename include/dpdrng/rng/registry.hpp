@@ -1,5 +1,7 @@
 #pragma once
-// Generator names, their round ranges, and the one place where a runtime choice becomes a compile-time type.
+// Generator families, their names and round ranges, and the one place where a runtime choice becomes a
+// compile-time type.
+#include <array>
 #include <span>
 #include <string>
 #include <string_view>
@@ -15,8 +17,50 @@
 
 namespace dpdrng::rng {
 
+// The generator families. mt19937 is the reference stream, not a keyed hash.
+enum class Family { tea32, tea64, philox4x32, threefry2x64, splitmix64, saru, defect, mt19937 };
+
+template <int... R>
+using Rounds = std::integer_sequence<int, R...>;
+
+// The round counts compiled as constants (the studies' counts), one list per family: the registry's dispatch,
+// the pair forces, the streams and bench rng all take them from here. Any other count of a family with a round
+// parameter runs its run-time-rounds instantiation (G<0>); the other families have no round parameter.
+template <Family F>
+constexpr auto compiled_rounds() {
+  if constexpr (F == Family::tea32 || F == Family::tea64)
+    return Rounds<1, 2, 3, 4, 5, 6, 8, 16, 32>{};
+  else if constexpr (F == Family::philox4x32)
+    return Rounds<7, 10>{};
+  else if constexpr (F == Family::threefry2x64)
+    return Rounds<13, 20>{};
+  else
+    return Rounds<>{};
+}
+
+namespace detail {
+template <int... R>
+constexpr std::array<int, sizeof...(R)> as_array(Rounds<R...>) {
+  return {R...};
+}
+template <Family F>
+inline constexpr auto kCompiledRounds = as_array(compiled_rounds<F>());
+}  // namespace detail
+
+// The same lists at run time.
+constexpr std::span<const int> compiled_round_list(Family f) {
+  switch (f) {
+    case Family::tea32: return detail::kCompiledRounds<Family::tea32>;
+    case Family::tea64: return detail::kCompiledRounds<Family::tea64>;
+    case Family::philox4x32: return detail::kCompiledRounds<Family::philox4x32>;
+    case Family::threefry2x64: return detail::kCompiledRounds<Family::threefry2x64>;
+    default: return {};
+  }
+}
+
 struct GeneratorInfo {
   std::string_view name;
+  Family family;
   int default_rounds;
   int min_rounds, max_rounds;
   std::string_view safe_rounds;  // what the generator's authors call safe, with the source
@@ -27,6 +71,7 @@ struct GeneratorInfo {
 std::span<const GeneratorInfo> generator_table();
 // throws InputError naming the known generators; "defect:..." (defect.hpp) is checked and gives the "defect" entry
 const GeneratorInfo& find_generator(std::string_view name);
+inline Family family_of(std::string_view name) { return find_generator(name).family; }
 
 struct GeneratorSpec {
   std::string name = "tea32";
@@ -60,27 +105,61 @@ decltype(auto) dispatch_rounds(const GeneratorSpec& s, F&& f) {
     return f(g);
   }
 }
+
+template <template <int> class G, int... Rs, class F>
+decltype(auto) dispatch_rounds(const GeneratorSpec& s, Rounds<Rs...>, F&& f) {
+  return dispatch_rounds<G, Rs...>(s, std::forward<F>(f));
+}
+
+template <class G, class F>
+decltype(auto) keyed(const GeneratorSpec& s, F&& f) {
+  G g;
+  g.key = s.key;
+  return f(g);
+}
 }  // namespace detail
 
-// Calls f(generator) with a concrete keyed-hash type; the study's round counts are compile-time constants,
-// any other count runs the runtime-rounds instantiation. mt19937 is not a keyed hash: InputError.
-template <class F>
-decltype(auto) with_hash(const GeneratorSpec& s, F&& f) {
-  if (s.name == "tea32") return detail::dispatch_rounds<Tea32, 1, 2, 3, 4, 5, 6, 8, 16, 32>(s, std::forward<F>(f));
-  if (s.name == "tea64") return detail::dispatch_rounds<Tea64, 1, 2, 3, 4, 5, 6, 8, 16, 32>(s, std::forward<F>(f));
-  if (s.name == "philox4x32") return detail::dispatch_rounds<Philox4x32, 7, 10>(s, std::forward<F>(f));
-  if (s.name == "threefry2x64") return detail::dispatch_rounds<Threefry2x64, 13, 20>(s, std::forward<F>(f));
-  if (s.name == "splitmix64") return detail::dispatch_rounds<SplitMix64, 1>(s, std::forward<F>(f));
-  if (s.name == "saru") return detail::dispatch_rounds<Saru, 1>(s, std::forward<F>(f));
-  if (is_defect(s.name)) {
+// Calls f(generator) with a concrete keyed-hash type of the family; its compiled round counts are
+// compile-time constants, any other count runs the runtime-rounds instantiation.
+template <Family Fam, class F>
+decltype(auto) with_family_hash(const GeneratorSpec& s, F&& f) {
+  if constexpr (Fam == Family::tea32)
+    return detail::dispatch_rounds<Tea32>(s, compiled_rounds<Fam>(), std::forward<F>(f));
+  else if constexpr (Fam == Family::tea64)
+    return detail::dispatch_rounds<Tea64>(s, compiled_rounds<Fam>(), std::forward<F>(f));
+  else if constexpr (Fam == Family::philox4x32)
+    return detail::dispatch_rounds<Philox4x32>(s, compiled_rounds<Fam>(), std::forward<F>(f));
+  else if constexpr (Fam == Family::threefry2x64)
+    return detail::dispatch_rounds<Threefry2x64>(s, compiled_rounds<Fam>(), std::forward<F>(f));
+  else if constexpr (Fam == Family::splitmix64)
+    return detail::keyed<SplitMix64>(s, std::forward<F>(f));
+  else if constexpr (Fam == Family::saru)
+    return detail::keyed<Saru>(s, std::forward<F>(f));
+  else {
+    static_assert(Fam == Family::defect, "mt19937 is not a keyed hash");
     Defect g;
     g.key = s.key;
     g.p = parse_defect(s.name);
     return f(g);
   }
-  throw_not_keyed_hash(s.name);
 }
 
+// Calls f(generator) with a concrete keyed-hash type chosen by the spec's family. mt19937 is not a keyed hash:
+// InputError.
+template <class F>
+decltype(auto) with_hash(const GeneratorSpec& s, F&& f) {
+  switch (family_of(s.name)) {
+    case Family::tea32: return with_family_hash<Family::tea32>(s, std::forward<F>(f));
+    case Family::tea64: return with_family_hash<Family::tea64>(s, std::forward<F>(f));
+    case Family::philox4x32: return with_family_hash<Family::philox4x32>(s, std::forward<F>(f));
+    case Family::threefry2x64: return with_family_hash<Family::threefry2x64>(s, std::forward<F>(f));
+    case Family::splitmix64: return with_family_hash<Family::splitmix64>(s, std::forward<F>(f));
+    case Family::saru: return with_family_hash<Family::saru>(s, std::forward<F>(f));
+    case Family::defect: return with_family_hash<Family::defect>(s, std::forward<F>(f));
+    case Family::mt19937: break;
+  }
+  throw_not_keyed_hash(s.name);
+}
 
 // Calls f(PairNoise<G, S, D>) for a keyed hash, a pair seeding and a distribution chosen at run time; the feed
 // is the noise's run-time field.

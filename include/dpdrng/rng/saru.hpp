@@ -79,14 +79,12 @@ constexpr std::uint64_t two_outputs(State s) {
 }
 }  // namespace saru_detail
 
-template <int R = 1>
 struct Saru {
   static constexpr const char* kName = "saru";
   static constexpr int kWords = 1;
   using Block = std::array<std::uint64_t, kWords>;
 
   TeaKey key = kPaperTeaKey;
-  int rounds = 1;
 
   // Counter mode, as HOOMD seeded per-thread microstreams: call i seeds with the two 32-bit halves of the
   // 64-bit counter start + i (low word first) and returns that microstream's first two outputs. The key is unused.

@@ -18,14 +18,12 @@ constexpr std::uint64_t splitmix64_mix(std::uint64_t z) {
   return z ^ (z >> 31);
 }
 
-template <int R = 1>
 struct SplitMix64 {
   static constexpr const char* kName = "splitmix64";
   static constexpr int kWords = 1;
   using Block = std::array<std::uint64_t, kWords>;
 
   TeaKey key = kPaperTeaKey;
-  int rounds = 1;
 
   std::uint64_t key64() const { return join32(key[1], key[0]); }
   // The published stream: state = start, call i returns mix(start + (i+1)·γ).
