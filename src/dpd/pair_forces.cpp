@@ -1,4 +1,5 @@
-// The one place where the run-time noise choice becomes a compiled pair loop (hash families in their own files).
+// The one place where the run-time noise choice becomes a noise kernel for the pair loop (hash families in their
+// own files).
 #include <cmath>
 
 #include "pair_forces_make.hpp"
@@ -19,8 +20,7 @@ DpdKernel make_kernel(double a, double rc, double gamma, double kT, double dt) {
 namespace {
 template <class Noise>
 std::unique_ptr<PairForces> loop(Noise noise, const WaterConfig& cfg, const DpdKernel& kernel, std::size_t n) {
-  return std::make_unique<PairLoop<Noise>>(std::move(noise), kernel, cfg.pairs, cfg.threads, n,
-                                           cfg.taps.pairs);
+  return make_pair_loop(make_noise_kernel(std::move(noise)), kernel, cfg.pairs, cfg.threads, n, cfg.taps.pairs);
 }
 
 template <rng::Distribution D>

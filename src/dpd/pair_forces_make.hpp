@@ -1,10 +1,9 @@
 #pragma once
-// Internal to src/dpd: the pair-loop factory split by generator family, one translation unit each, because
-// each family instantiates the whole pair loop for every round count × seeding × distribution, and one file
-// holding all of them took minutes to compile. The round lists are rng::compiled_rounds (registry.hpp).
+// Internal to src/dpd: the noise-kernel factory split by generator family, one translation unit each, since
+// each family instantiates the kernel for every compiled round count × seeding × distribution.
 #include <memory>
 
-#include "dpdrng/dpd/pair_loop.hpp"
+#include "noise_kernel.hpp"
 #include "dpdrng/rng/registry.hpp"
 
 namespace dpdrng::dpd::detail {
@@ -14,8 +13,7 @@ std::unique_ptr<PairForces> make_for_generator(const G& gen, const WaterConfig& 
                                                std::size_t n) {
   auto build = [&]<rng::Seeding S, rng::Distribution D>() -> std::unique_ptr<PairForces> {
     HashNoise<rng::PairNoise<G, S, D>> noise{{gen, cfg.seed, cfg.feed}};
-    return std::make_unique<PairLoop<decltype(noise)>>(noise, kernel, cfg.pairs, cfg.threads, n,
-                                                       cfg.taps.pairs);
+    return make_pair_loop(make_noise_kernel(noise), kernel, cfg.pairs, cfg.threads, n, cfg.taps.pairs);
   };
   using rng::Distribution, rng::Seeding;
   const bool gauss = cfg.distribution == Distribution::gauss;

@@ -1,6 +1,6 @@
 #pragma once
-// The DPD pair forces of one step behind a run-time interface (one virtual call per step), with the noise
-// policy a compile-time parameter inside (pair_loop.hpp), so the hash inlines into the pair loop.
+// The DPD pair forces of one step behind a run-time interface (one virtual call per step). Inside, the pair
+// loop calls a per-noise kernel once per batch of pairs (pair_loop.hpp), so the hash inlines into that kernel.
 //
 // Determinism: rows (bead i and its partners j > i) run in parallel, but each writes only its own slots; the
 // reactions −F_ij are then added to the partners serially in row order, and the virial sums run over per-row

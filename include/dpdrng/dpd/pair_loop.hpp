@@ -1,5 +1,6 @@
 #pragma once
-// The pair loop, templated on the noise policy (noise.hpp) so that the generator inlines.
+// The pair loop, compiled once (pair_loop.cpp), around a per-noise kernel (noise_kernel.hpp) that it calls once
+// per batch of pairs: a row's partners (all mode) or a cell bead's partners (cells mode), never per pair.
 //   all:   row i does its partners j > i in two passes: geometry (separation, r², and the generator call for
 //          every pair, as the paper does), then forces for the pairs inside r_c. The split keeps the first
 //          pass free of branches so the compiler can vectorise the hash. Reactions are added serially.
@@ -10,20 +11,17 @@
 //          neighbours are done. Each layer's forces go back to the System as soon as they are final.
 //          Generator inputs use the beads' own indices, so nothing but the summation order depends on the
 //          sorting.
-// Both modes turn a row's or a cell bead's blocks into ζ in one batch (noise.zetas: the feed is switched on once
-// per batch, not per pair), and compute the second blocks only under the blocks feed.
-#include <omp.h>
+// Both modes turn a row's or a cell bead's blocks into ζ in one batch inside the kernel (the feed is switched
+// on once per batch, not per pair), and compute the second blocks only under the blocks feed.
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <utility>
+#include <vector>
 
-#include <algorithm>
-#include <atomic>
-#include <chrono>
-#include <cmath>
-#include <limits>
-
-#include "dpdrng/dpd/neighbours.hpp"
-#include "dpdrng/dpd/noise.hpp"
 #include "dpdrng/dpd/pair_forces.hpp"
-#include "dpdrng/dpd/spin.hpp"
+#include "dpdrng/rng/distribution.hpp"
+#include "dpdrng/rng/seeding.hpp"
 
 namespace dpdrng::dpd {
 
@@ -45,508 +43,54 @@ inline void geometry(const double* __restrict x, const double* __restrict y, con
   }
 }
 
-template <class Noise>
-class PairLoop final : public PairForces {
- public:
-  PairLoop(Noise noise, const DpdKernel& kernel, PairMode mode, int threads, std::size_t n,
-           std::vector<std::pair<std::uint32_t, std::uint32_t>> tap_pairs)
-      : noise_(std::move(noise)), k_(kernel), mode_(mode), threads_(threads > 0 ? threads : omp_get_max_threads()),
-        tap_pairs_(std::move(tap_pairs)) {
-    scratch_.resize(threads_);
-    if (mode_ == PairMode::all) {
-      rows_.resize(n);
-      for (auto& sc : scratch_) sc.resize(n);
-    }
-  }
-
-  int words_per_pair() const override { return Noise::kWords; }
-  std::uint64_t list_builds() const override { return cells_.builds(); }
-
-  ForceSums compute(System& s, VelocityView v, std::uint64_t step, bool tap_raw, bool tap_series, bool tap_zeta,
-                    Taps& taps) override {
-    const std::size_t n = s.size();
-    RawTap* tap = nullptr;
-    if (tap_raw && !Noise::kZero) {
-      tap = &taps.raw.emplace_back();
-      tap->step = static_cast<std::int64_t>(step);
-      tap->words_per_pair = Noise::kWords;
-    }
-    const Ctx c{s, v, step, tap, tap_zeta && !Noise::kZero, noise_.feed() == rng::Feed::blocks};
-    // Generator calls per pair: the blocks feed hashes a second block.
-    const std::uint64_t calls = Noise::kZero ? 0 : c.two_blocks ? 2 : 1;
-    ForceSums sums;
-    if (mode_ == PairMode::all) {
-      const std::size_t slots = n * (n - 1) / 2;
-      if constexpr (Noise::kStream) noise_.begin_step(slots);
-      if (tap)
-        for (int w = 0; w < Noise::kWords; ++w) tap->words[w].assign(slots, 0);
-#pragma omp parallel for num_threads(threads_) schedule(dynamic, 16)
-      for (std::size_t i = 0; i < n; ++i) row_all(c, static_cast<std::uint32_t>(i), scratch_[omp_get_thread_num()]);
-      sums = reduce(s);
-      sums.numbers = calls * slots;
-    } else {
-      sums = compute_cells(c);
-      sums.numbers = calls * sums.in_range;
-    }
-    if (tap_series && !Noise::kZero) record_series(s, step, taps);
-    return sums;
-  }
-
-  // Timed like the loop uses them: the generator over a batch of pair inputs (vectorised as in pass 1), the
-  // distribution over the resulting blocks. Best of 5 repetitions of 4096 calls.
-  double ns_per_number() const override { return calibrate(false); }
-  double ns_per_zeta() const override { return calibrate(true); }
-
- private:
-  struct Rec {
-    std::uint32_t j;
-    double fx, fy, fz;
-  };
-  struct Row {
-    std::vector<Rec> rec;
-    std::uint32_t count = 0;
-    double w[3] = {0, 0, 0}, wc[3] = {0, 0, 0};
-    double min_r2 = 0;
-    ZetaSums zeta;
-  };
-  struct Scratch {
-    std::vector<double> dx, dy, dz, r2;
-    std::vector<std::uint32_t> j;
-    std::vector<typename Noise::Block> blk, blk2;  // the pairs' blocks; their second blocks (blocks feed)
-    std::vector<double> zeta;
-    std::vector<double> cx, cy, cz;   // cells: coordinates of a cell's candidates, contiguous
-    std::vector<std::uint32_t> cand;  // cells: their sorted indices
-    void resize(std::size_t n) {
-      dx.resize(n), dy.resize(n), dz.resize(n), r2.resize(n), j.resize(n), blk.resize(n), blk2.resize(n);
-      zeta.resize(n);
-      cx.resize(n), cy.resize(n), cz.resize(n), cand.resize(n);
-    }
-  };
-  struct CellSums {
-    double w[3] = {0, 0, 0}, wc[3] = {0, 0, 0};
-    double min_r2 = 0;
-    std::uint64_t count = 0;
-    ZetaSums zeta;
-  };
-  struct Ctx {
-    System& s;
-    VelocityView v;
-    std::uint64_t step;
-    RawTap* tap;
-    bool tap_zeta, two_blocks;
-  };
-
-  // Pass 2, shared by both modes: forces for the m in-range pairs held in sc (partners sc.j, blocks sc.blk).
-  void forces(const Ctx& c, std::uint32_t i, std::size_t m, Scratch& sc, Row& row) const {
-    const System& s = c.s;
-    const double vxi = c.v.vx[i], vyi = c.v.vy[i], vzi = c.v.vz[i];
-    const double* arow = &k_.a[std::size_t(s.type[i]) * k_.ntypes];
-    const double rc = k_.rc, gamma = k_.gamma, sig = k_.sigma * k_.inv_sqrt_dt;
-    double fx = 0, fy = 0, fz = 0, w0 = 0, w1 = 0, w2 = 0, c0 = 0, c1 = 0, c2 = 0;
-    double min_r2 = k_.rc2();
-    if (row.rec.size() < m) row.rec.resize(m);
-    // The ζ = 0 baseline skips the pass and keeps the constant, as the benchmark's floor must.
-    if constexpr (!Noise::kZero) noise_.zetas(sc.blk.data(), sc.blk2.data(), sc.zeta.data(), m);
-    row.zeta = ZetaSums{};
-    if (c.tap_zeta) row.zeta.add(sc.zeta.data(), m);
-    for (std::size_t t = 0; t < m; ++t) {
-      const std::uint32_t j = sc.j[t];
-      const double dx = sc.dx[t], dy = sc.dy[t], dz = sc.dz[t], r2 = sc.r2[t];
-      const double zeta = Noise::kZero ? 0.0 : sc.zeta[t];
-      const PairForce pf = DpdKernel::evaluate(r2, dx, dy, dz, c.v.vx[j] - vxi, c.v.vy[j] - vyi, c.v.vz[j] - vzi,
-                                               arow[s.type[j]], zeta, rc, gamma, sig);
-      const double gx = pf.s * dx, gy = pf.s * dy, gz = pf.s * dz;
-      fx += gx, fy += gy, fz += gz;
-      row.rec[t] = {j, gx, gy, gz};
-      // r_ij = −d and F_ij = s·d: (r_ij)_α (F_ij)_α = −s d_α²; conservative: a w d_α² / r.
-      w0 -= gx * dx, w1 -= gy * dy, w2 -= gz * dz;
-      const double cw = pf.a_w / r2;
-      c0 += cw * dx * dx, c1 += cw * dy * dy, c2 += cw * dz * dz;
-      min_r2 = std::min(min_r2, r2);
-    }
-    c.s.fx[i] = fx, c.s.fy[i] = fy, c.s.fz[i] = fz;
-    row.count = static_cast<std::uint32_t>(m);
-    row.w[0] = w0, row.w[1] = w1, row.w[2] = w2;
-    row.wc[0] = c0, row.wc[1] = c1, row.wc[2] = c2;
-    row.min_r2 = min_r2;
-  }
-
-  double calibrate(bool zeta_only) const {
-    if constexpr (Noise::kZero) {
-      return 0.0;
-    } else {
-      constexpr std::size_t kCalls = 4096;
-      Noise noise = noise_;
-      Scratch sc;
-      sc.resize(kCalls);
-      for (std::size_t t = 0; t < kCalls; ++t)
-        sc.dx[t] = 0.9 - 4e-4 * t, sc.dy[t] = 0.25 - 1e-4 * t, sc.dz[t] = 1e-4 * t - 0.1;
-      const bool two = noise.feed() == rng::Feed::blocks;
-      auto fill = [&] {
-        if constexpr (Noise::kStream) noise.begin_step(kCalls);
-        for (std::size_t t = 0; t < kCalls; ++t)
-          sc.blk[t] = noise.raw(rng::PairInput{7, std::uint32_t(8 + t), sc.dx[t], sc.dy[t], sc.dz[t], 99}, t);
-      };
-      fill();  // warm-up, and real blocks for the ζ timing (the stream's second buffer too)
-      if (two)
-        for (std::size_t t = 0; t < kCalls; ++t)
-          sc.blk2[t] = noise.raw2(rng::PairInput{7, std::uint32_t(8 + t), sc.dx[t], sc.dy[t], sc.dz[t], 99}, t);
-      double best = std::numeric_limits<double>::infinity();
-      volatile double sink = 0;
-      for (int rep = 0; rep < 5; ++rep) {
-        double acc = 0;
-        const auto t0 = std::chrono::steady_clock::now();
-        if (zeta_only)
-          noise.zetas(sc.blk.data(), sc.blk2.data(), sc.zeta.data(), kCalls), acc = sc.zeta[kCalls / 2];
-        else
-          fill(), acc = double(sc.blk[kCalls / 2][0] & 1);
-        const auto t1 = std::chrono::steady_clock::now();
-        sink = sink + acc;
-        best = std::min(best, std::chrono::duration<double, std::nano>(t1 - t0).count() / kCalls);
-      }
-      return best;
-    }
-  }
-
-  void row_all(const Ctx& c, std::uint32_t i, Scratch& sc) {
-    const System& s = c.s;
-    const std::size_t n = s.size();
-    const std::size_t m = n - i - 1, base = pair_slot(i, i + 1, n);
-    geometry(s.x.data() + i + 1, s.y.data() + i + 1, s.z.data() + i + 1, s.x[i], s.y[i], s.z[i], s.box, m,
-             sc.dx.data(), sc.dy.data(), sc.dz.data(), sc.r2.data());
-    double* dxs = sc.dx.data();
-    double* dys = sc.dy.data();
-    double* dzs = sc.dz.data();
-    double* r2s = sc.r2.data();
-    auto* blk = sc.blk.data();
-    if constexpr (!Noise::kZero)
-      for (std::size_t t = 0; t < m; ++t)
-        blk[t] = noise_.raw(rng::PairInput{i, std::uint32_t(i + 1 + t), dxs[t], dys[t], dzs[t], c.step}, base + t);
-    if (c.tap)
-      for (int w = 0; w < Noise::kWords; ++w)
-        for (std::size_t t = 0; t < m; ++t) c.tap->words[w][base + t] = blk[t][w];
-    // Compact the pairs inside r_c in place (t' ≤ t), keeping their order; second blocks first, while r2s
-    // still holds every pair.
-    const double rc2 = k_.rc2();
-    if (c.two_blocks) {
-      auto* blk2 = sc.blk2.data();
-      for (std::size_t t = 0; t < m; ++t)
-        blk2[t] = noise_.raw2(rng::PairInput{i, std::uint32_t(i + 1 + t), dxs[t], dys[t], dzs[t], c.step}, base + t);
-      std::size_t k2 = 0;
-      for (std::size_t t = 0; t < m; ++t)
-        if (r2s[t] < rc2) blk2[k2++] = blk2[t];
-    }
-    std::size_t k = 0;
-    for (std::size_t t = 0; t < m; ++t) {
-      if (!(r2s[t] < rc2)) continue;
-      sc.j[k] = std::uint32_t(i + 1 + t);
-      dxs[k] = dxs[t], dys[k] = dys[t], dzs[k] = dzs[t], r2s[k] = r2s[t], blk[k] = blk[t];
-      ++k;
-    }
-    forces(c, i, k, sc, rows_[i]);
-  }
-
-  void resize_sorted(std::size_t n) {
-    for (auto* a : {&xs_, &ys_, &zs_, &vxs_, &vys_, &vzs_, &fxs_, &fys_, &fzs_}) a->resize(n);
-    types_.resize(n);
-  }
-
-  // Sorted copies of what the pairs read (positions, the dissipative force's velocities, types),
-  // and zeroed sorted forces, by the team of the sort: each thread copies the beads of the layers it will own
-  // (own_layers), so they start in its cache. Each sorted slot is written once.
-  void gather(const System& s, VelocityView v) {
-    const auto [z0, z1] = own_layers(omp_get_thread_num(), omp_get_num_threads());
-    const int per_layer = cells_.layer_cells();
-    const std::uint32_t* order = cells_.order().data();
-    for (std::uint32_t k = cells_.begin(z0 * per_layer), e = cells_.begin(z1 * per_layer); k < e; ++k) {
-      const std::uint32_t i = order[k];
-      xs_[k] = s.x[i], ys_[k] = s.y[i], zs_[k] = s.z[i];
-      vxs_[k] = v.vx[i], vys_[k] = v.vy[i], vzs_[k] = v.vz[i];
-      fxs_[k] = 0, fys_[k] = 0, fzs_[k] = 0;
-      types_[k] = s.type[i];
-    }
-  }
-
-  // Thread t of nt owns a contiguous block of layers: its layers' writes to the next layer then stay on the
-  // same core, except at the block's end.
-  std::pair<int, int> own_layers(int t, int nt) const {
-    const int layers = cells_.layers();
-    return {layers * t / nt, layers * (t + 1) / nt};
-  }
-
-  // Candidates of cell c, contiguous in sc: its own beads first, then those of its forward neighbours.
-  std::size_t candidates(int c, Scratch& sc) const {
-    const std::int32_t* fw = cells_.forward(c);
-    const int nf = cells_.forward_count();
-    std::size_t m = cells_.end(c) - cells_.begin(c);
-    for (int f = 0; f < nf; ++f) m += cells_.end(fw[f]) - cells_.begin(fw[f]);
-    if (sc.cand.size() < m) sc.resize(m);
-    std::size_t t = 0;
-    auto add = [&](int cell) {
-      for (std::uint32_t k = cells_.begin(cell); k < cells_.end(cell); ++k, ++t)
-        sc.cand[t] = k, sc.cx[t] = xs_[k], sc.cy[t] = ys_[k], sc.cz[t] = zs_[k];
-    };
-    add(c);
-    for (int f = 0; f < nf; ++f) add(fw[f]);
-    return m;
-  }
-
-  // Bead q of the cell (sorted index a) against the candidates after it: the pairs inside r_c, compacted
-  // into sc (partners' sorted indices in sc.j). Returns their number.
-  std::size_t in_range(const Box& box, std::uint32_t a, std::size_t q, std::size_t m, Scratch& sc) const {
-    const std::size_t len = m - q - 1;
-    geometry(sc.cx.data() + q + 1, sc.cy.data() + q + 1, sc.cz.data() + q + 1, xs_[a], ys_[a], zs_[a], box, len,
-             sc.dx.data(), sc.dy.data(), sc.dz.data(), sc.r2.data());
-    const double rc2 = k_.rc2();
-    const std::uint32_t* cand = sc.cand.data() + q + 1;
-    std::size_t k = 0;
-    for (std::size_t t = 0; t < len; ++t) {
-      sc.j[k] = cand[t];
-      sc.dx[k] = sc.dx[t], sc.dy[k] = sc.dy[t], sc.dz[k] = sc.dz[t], sc.r2[k] = sc.r2[t];
-      k += sc.r2[t] < rc2 ? 1 : 0;  // branch-free compaction: the slot is overwritten unless the pair is in range
-    }
-    return k;
-  }
-
-  std::uint64_t count_cell(const Box& box, int c, Scratch& sc) const {
-    const std::size_t m = candidates(c, sc), own = cells_.end(c) - cells_.begin(c);
-    std::uint64_t count = 0;
-    for (std::size_t q = 0; q < own; ++q) count += in_range(box, cells_.begin(c) + std::uint32_t(q), q, m, sc);
-    return count;
-  }
-
-  // All pairs owned by cell c. Writes only to the beads of c and its forward neighbours.
-  void do_cell(const Ctx& cx, int c, Scratch& sc, bool tap) {
-    const Box& box = cx.s.box;
-    const std::size_t m = candidates(c, sc), own = cells_.end(c) - cells_.begin(c);
-    const double rc = k_.rc, gamma = k_.gamma, sig = k_.sigma * k_.inv_sqrt_dt;
-    const std::uint32_t* ids = cells_.order().data();
-    CellSums cs;
-    cs.min_r2 = k_.rc2();
-    std::uint64_t slot = slot_base_.empty() ? 0 : slot_base_[c];
-    if (tap)
-      for (int w = 0; w < Noise::kWords; ++w) cell_tap_[c][w].clear();
-    for (std::size_t q = 0; q < own; ++q) {
-      const std::uint32_t a = cells_.begin(c) + std::uint32_t(q);
-      const std::size_t k = in_range(box, a, q, m, sc);
-      if constexpr (!Noise::kZero) {
-        for (std::size_t t = 0; t < k; ++t) {
-          const rng::PairInput p{ids[a], ids[sc.j[t]], sc.dx[t], sc.dy[t], sc.dz[t], cx.step};
-          sc.blk[t] = noise_.raw(rng::canonical(p), slot + t);
-        }
-        if (cx.two_blocks)
-          for (std::size_t t = 0; t < k; ++t) {
-            const rng::PairInput p{ids[a], ids[sc.j[t]], sc.dx[t], sc.dy[t], sc.dz[t], cx.step};
-            sc.blk2[t] = noise_.raw2(rng::canonical(p), slot + t);
-          }
-        noise_.zetas(sc.blk.data(), sc.blk2.data(), sc.zeta.data(), k);
-        if (cx.tap_zeta) cs.zeta.add(sc.zeta.data(), k);
-      }
-      if (tap)
-        for (int w = 0; w < Noise::kWords; ++w)
-          for (std::size_t t = 0; t < k; ++t) cell_tap_[c][w].push_back(sc.blk[t][w]);
-      slot += k;
-      const double vxa = vxs_[a], vya = vys_[a], vza = vzs_[a];
-      const double* arow = &k_.a[std::size_t(types_[a]) * k_.ntypes];
-      double fx = 0, fy = 0, fz = 0;
-      for (std::size_t t = 0; t < k; ++t) {
-        const std::uint32_t b = sc.j[t];
-        const double dx = sc.dx[t], dy = sc.dy[t], dz = sc.dz[t], r2 = sc.r2[t];
-        const double zeta = Noise::kZero ? 0.0 : sc.zeta[t];
-        const PairForce pf = DpdKernel::evaluate(r2, dx, dy, dz, vxs_[b] - vxa, vys_[b] - vya, vzs_[b] - vza,
-                                                 arow[types_[b]], zeta, rc, gamma, sig);
-        const double gx = pf.s * dx, gy = pf.s * dy, gz = pf.s * dz;
-        fx += gx, fy += gy, fz += gz;
-        fxs_[b] -= gx, fys_[b] -= gy, fzs_[b] -= gz;
-        // r_ab = −d and F_ab = s·d: (r_ab)_α (F_ab)_α = −s d_α²; conservative: a w d_α² / r.
-        cs.w[0] -= gx * dx, cs.w[1] -= gy * dy, cs.w[2] -= gz * dz;
-        const double cw = pf.a_w / r2;
-        cs.wc[0] += cw * dx * dx, cs.wc[1] += cw * dy * dy, cs.wc[2] += cw * dz * dz;
-        cs.min_r2 = std::min(cs.min_r2, r2);
-      }
-      fxs_[a] += fx, fys_[a] += fy, fzs_[a] += fz;
-      cs.count += k;
-    }
-    cell_sums_[c] = cs;
-  }
-
-  ForceSums compute_cells(const Ctx& cx) {
-    System& s = cx.s;
-    const bool team = s.size() >= SortedCells::kParallelBeads;
-    cells_.prepare(s, k_.rc, team ? threads_ : 1);
-    resize_sorted(s.size());
-    const int nc = cells_.cells();
-    cell_sums_.resize(std::size_t(nc));
-    const bool tap = cx.tap != nullptr;
-    if (tap) cell_tap_.resize(std::size_t(nc));
-    slot_base_.assign(Noise::kStream ? std::size_t(nc) + 1 : 0, 0);
-    // One region for the step's pair forces: three barriers (inside the sort, after it, after the gather;
-    // the stream reference adds two), then the layers, which wait for their neighbours only, then the join.
-#pragma omp parallel num_threads(threads_) if (team)
-    {
-      cells_.sort(s);
-      // The team actually granted, which OMP_THREAD_LIMIT or an enclosing region can make smaller than asked:
-      // a queue without a thread behind it could hold an even layer that an odd one waits for forever.
-#pragma omp single
-      reset_layers(omp_get_num_threads());
-      gather(s, cx.v);
-#pragma omp barrier
-      if constexpr (Noise::kStream) number_pairs(s.box);
-      run_layers(cx, scratch_[omp_get_thread_num()], tap);
-    }
-    ForceSums sums;
-    sums.min_r2 = k_.rc2();
-    for (const CellSums& cs : cell_sums_) {
-      for (int a = 0; a < 3; ++a) sums.virial[a] += cs.w[a], sums.virial_cons[a] += cs.wc[a];
-      sums.min_r2 = std::min(sums.min_r2, cs.min_r2);
-      sums.in_range += cs.count;
-      sums.zeta.merge(cs.zeta);
-    }
-    if (tap)
-      for (int c = 0; c < nc; ++c)
-        for (int w = 0; w < Noise::kWords; ++w)
-          cx.tap->words[w].insert(cx.tap->words[w].end(), cell_tap_[c][w].begin(), cell_tap_[c][w].end());
-    return sums;
-  }
-
-  // The stream reference needs every pair's slot, in the fixed pair order, before any layer runs.
-  void number_pairs(const Box& box) {
-    const int nc = cells_.cells();
-#pragma omp for schedule(dynamic, 8)
-    for (int c = 0; c < nc; ++c) slot_base_[c + 1] = count_cell(box, c, scratch_[omp_get_thread_num()]);
-#pragma omp single
-    {
-      for (int c = 0; c < nc; ++c) slot_base_[c + 1] += slot_base_[c];
-      noise_.begin_step(slot_base_[nc]);
-    }
-  }
-
-  // Each worker's queue of layers: its own block's even layers, then its odd ones (a single layer when the box
-  // has no grid). A box with few layers per colour runs on one worker (the result does not depend on the
-  // team size, so this choice is free). Every worker must be a thread of the team that runs the layers.
-  void reset_layers(int team) {
-    const int layers = cells_.layers(), colours = cells_.colours();
-    workers_ = layers / colours >= 2 * team ? team : 1;
-    items_.clear(), queue_.assign(std::size_t(workers_) + 1, 0), cursor_.assign(std::size_t(workers_) * kLine, 0);
-    for (int w = 0; w < workers_; ++w) {
-      const auto [z0, z1] = own_layers(w, workers_);
-      for (int colour = 0; colour < colours; ++colour)
-        for (int z = z0; z < z1; ++z)
-          if (z % colours == colour) items_.push_back(z);
-      queue_[w + 1] = int(items_.size());
-      cursor_[std::size_t(w) * kLine] = queue_[w];
-    }
-    done_.assign(std::size_t(layers), 0);
-    pending_.assign(std::size_t(layers), 2);
-  }
-
-  // The next layer for thread t: from its own queue, else taken from another worker's (in that queue's
-  // order, so every even layer is claimed before any odd one of the same queue), or −1 when all are claimed.
-  int claim(int t) {
-    for (int u = 0; u < workers_; ++u) {
-      const int w = (t + u) % workers_;
-      const int q = std::atomic_ref<int>(cursor_[std::size_t(w) * kLine]).fetch_add(1, std::memory_order_relaxed);
-      if (q < queue_[w + 1]) return items_[q];
-    }
-    return -1;
-  }
-
-  // Layer z's cells write forces to layers z and z + 1 only, so the even layers run side by side, and an odd
-  // layer may start once its two even neighbours are done: the same order of contributions for every bead
-  // as two colours with a barrier between them (even layers first), without the barrier: a thread that
-  // finishes early, or whose partner the host has paused, takes the other's remaining layers. No claimed
-  // even layer waits for anything, so an odd one's wait always ends. A layer's forces are final once it
-  // and the layer before it are done; the thread that completes the second copies them to the System.
-  void run_layers(const Ctx& cx, Scratch& sc, bool tap) {
-    const int layers = cells_.layers(), per_layer = cells_.layer_cells();
-    if (omp_get_thread_num() >= workers_) return;
-    for (int z; (z = claim(omp_get_thread_num())) >= 0;) {
-      if (z % cells_.colours() != 0) await_layer(z - 1), await_layer((z + 1) % layers);
-      for (int c = z * per_layer; c < (z + 1) * per_layer; ++c) do_cell(cx, c, sc, tap);
-      std::atomic_ref<int>(done_[z]).store(1, std::memory_order_release);
-      contributed(cx.s, z), contributed(cx.s, (z + 1) % layers);
-    }
-  }
-
-  void await_layer(int z) {
-    std::atomic_ref<int> done(done_[z]);
-    while (done.load(std::memory_order_acquire) == 0) cpu_relax();
-  }
-
-  // One of layer z's two contributors is done; the thread completing the second scatters the layer.
-  void contributed(System& s, int z) {
-    if (std::atomic_ref<int>(pending_[z]).fetch_sub(1, std::memory_order_acq_rel) != 1) return;
-    const int per_layer = cells_.layer_cells();
-    const std::uint32_t* order = cells_.order().data();
-    for (std::uint32_t k = cells_.begin(z * per_layer), e = cells_.end((z + 1) * per_layer - 1); k < e; ++k) {
-      const std::uint32_t i = order[k];
-      s.fx[i] = fxs_[k], s.fy[i] = fys_[k], s.fz[i] = fzs_[k];
-    }
-  }
-
-  ForceSums reduce(System& s) const {
-    ForceSums sums;
-    sums.min_r2 = k_.rc2();
-    for (std::size_t i = 0; i < s.size(); ++i) {
-      const Row& row = rows_[i];
-      for (std::uint32_t t = 0; t < row.count; ++t) {
-        const Rec& r = row.rec[t];
-        s.fx[r.j] -= r.fx, s.fy[r.j] -= r.fy, s.fz[r.j] -= r.fz;
-      }
-      for (int a = 0; a < 3; ++a) sums.virial[a] += row.w[a], sums.virial_cons[a] += row.wc[a];
-      sums.min_r2 = std::min(sums.min_r2, row.min_r2);
-      sums.in_range += row.count;
-      sums.zeta.merge(row.zeta);
-    }
-    return sums;
-  }
-
-  // Hashes are pure functions of the pair input, so a tapped pair's block is recomputed here from the same
-  // separation the loop used; the stream reference reads the pair's slot (all mode only, checked by validate).
-  void record_series(const System& s, std::uint64_t step, Taps& taps) const {
-    const double Lx = s.box.L[0], Ly = s.box.L[1], Lz = s.box.L[2];
-    if (taps.series.size() != tap_pairs_.size()) {
-      taps.series.resize(tap_pairs_.size());
-      for (std::size_t q = 0; q < tap_pairs_.size(); ++q) {
-        taps.series[q].i = tap_pairs_[q].first, taps.series[q].j = tap_pairs_[q].second;
-        taps.series[q].words_per_pair = Noise::kWords;
-      }
-    }
-    for (auto& ser : taps.series) {
-      const std::uint32_t i = ser.i, j = ser.j;
-      const double dx = min_image(s.x[j] - s.x[i], Lx, Lx / 2), dy = min_image(s.y[j] - s.y[i], Ly, Ly / 2),
-                   dz = min_image(s.z[j] - s.z[i], Lz, Lz / 2);
-      const rng::PairInput p{i, j, dx, dy, dz, step};
-      const std::size_t slot = pair_slot(i, j, s.size());
-      const auto blk = noise_.raw(p, slot);
-      const auto blk2 = noise_.feed() == rng::Feed::blocks ? noise_.raw2(p, slot) : blk;
-      double zeta = 0;
-      noise_.zetas(&blk, &blk2, &zeta, 1);
-      ser.steps.push_back(static_cast<std::int64_t>(step));
-      for (int w = 0; w < Noise::kWords; ++w) ser.words[w].push_back(blk[w]);
-      ser.zeta.push_back(zeta);
-    }
-  }
-
-  Noise noise_;
-  DpdKernel k_;
-  PairMode mode_;
-  int threads_;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> tap_pairs_;
-  std::vector<Row> rows_;  // all mode
-  std::vector<Scratch> scratch_;
-  // cells mode
-  SortedCells cells_;
-  std::vector<double> xs_, ys_, zs_, vxs_, vys_, vzs_, fxs_, fys_, fzs_;
-  std::vector<std::uint8_t> types_;
-  std::vector<CellSums> cell_sums_;
-  std::vector<std::uint64_t> slot_base_;
-  // The layers' schedule (reset_layers), used through atomic_ref: per layer, done and contributors pending;
-  // per worker, its queue items_[queue_[w], queue_[w + 1]) and its cursor, a cache line apart from the others.
-  static constexpr std::size_t kLine = 16;
-  int workers_ = 1;
-  std::vector<int> done_, pending_, items_, queue_, cursor_;
-  std::vector<std::array<std::vector<std::uint64_t>, 2>> cell_tap_;
+// All mode, row i: its m partners i + 1 … i + m, every one hashed (slots slot, slot + 1, …).
+struct RowBatch {
+  std::uint32_t i;
+  std::size_t m;
+  double *dx, *dy, *dz, *r2;  // compacted in place to the pairs with r² < rc2, in order
+  std::uint32_t* j;           // out: those pairs' partners
+  double rc2;
+  std::uint64_t step;
+  std::size_t slot;
+  std::uint64_t* tap[2];  // non-null: every pair's words go to tap[w][t]
+  double* zeta;           // out: ζ of the pairs with r² < rc2, in order
 };
+
+// Cells mode, one bead's k in-range partners (bead ids, in any order: the inputs are made canonical).
+struct BeadBatch {
+  std::uint32_t i;
+  const std::uint32_t* j;
+  std::size_t k;
+  const double *dx, *dy, *dz;
+  std::uint64_t step;
+  std::size_t slot;       // the first pair's slot (the stream reference's order)
+  std::uint64_t* tap[2];  // non-null: the pairs' words go to tap[w][t]
+  double* zeta;           // out: ζ of the k pairs
+};
+
+// The per-noise part of the pair loop: generator, seeding and distribution inline here, in one batch call.
+// Calls from different threads pass their thread number, which picks the kernel's scratch.
+class NoiseKernel {
+ public:
+  virtual ~NoiseKernel() = default;
+  virtual int words() const = 0;
+  virtual bool stream() const = 0;  // needs begin_step with the number of pairs before a step's first batch
+  virtual bool zero() const = 0;    // the ζ = 0 baseline: the loop calls nothing below
+  virtual rng::Feed feed() const = 0;
+  virtual void threads(int count) = 0;
+  virtual void begin_step(std::size_t slots) = 0;
+  // Returns the number of pairs inside r_c (their ζ in b.zeta).
+  virtual std::size_t row(const RowBatch& b, int thread) = 0;
+  virtual void bead(const BeadBatch& b, int thread) = 0;
+  // One pair as the loop sees it (p with i < j): its words (words() of them) and ζ.
+  virtual void pair(const rng::PairInput& p, std::size_t slot, std::uint64_t* words, double& zeta) const = 0;
+  // Timed like the loop uses them: the generator over a batch of pair inputs, the distribution over blocks.
+  virtual double ns_per_number() const = 0;
+  virtual double ns_per_zeta() const = 0;
+};
+
+std::unique_ptr<PairForces> make_pair_loop(std::unique_ptr<NoiseKernel> noise, const DpdKernel& kernel,
+                                           PairMode mode, int threads, std::size_t n,
+                                           std::vector<std::pair<std::uint32_t, std::uint32_t>> tap_pairs);
 
 }  // namespace dpdrng::dpd

@@ -1,0 +1,152 @@
+#pragma once
+// Internal to src/dpd: the per-noise kernel of the pair loop (pair_loop.hpp), one instantiation per noise
+// policy (noise.hpp), so the hash inlines into the batch loops while the loop around them is compiled once.
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <limits>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "dpdrng/dpd/noise.hpp"
+#include "dpdrng/dpd/pair_loop.hpp"
+
+namespace dpdrng::dpd {
+
+template <class Noise>
+class NoiseKernelOf final : public NoiseKernel {
+ public:
+  explicit NoiseKernelOf(Noise noise) : noise_(std::move(noise)) {}
+
+  int words() const override { return Noise::kWords; }
+  bool stream() const override { return Noise::kStream; }
+  bool zero() const override { return Noise::kZero; }
+  rng::Feed feed() const override { return noise_.feed(); }
+  void threads(int count) override { scratch_.resize(std::size_t(count)); }
+  void begin_step(std::size_t slots) override {
+    if constexpr (Noise::kStream) noise_.begin_step(slots);
+  }
+
+  std::size_t row(const RowBatch& b, int thread) override {
+    const std::size_t m = b.m;
+    Scratch& sc = scratch(thread, m);
+    Block* blk = sc.blk.data();
+    double *dxs = b.dx, *dys = b.dy, *dzs = b.dz, *r2s = b.r2;
+    const std::uint32_t i = b.i;
+    for (std::size_t t = 0; t < m; ++t)
+      blk[t] = noise_.raw(rng::PairInput{i, std::uint32_t(i + 1 + t), dxs[t], dys[t], dzs[t], b.step}, b.slot + t);
+    if (b.tap[0])
+      for (int w = 0; w < Noise::kWords; ++w)
+        for (std::size_t t = 0; t < m; ++t) b.tap[w][t] = blk[t][w];
+    // Keep the blocks of the pairs inside r_c, in order; second blocks first, while r2s covers every pair.
+    if (noise_.feed() == rng::Feed::blocks) {
+      Block* blk2 = sc.blk2.data();
+      for (std::size_t t = 0; t < m; ++t)
+        blk2[t] = noise_.raw2(rng::PairInput{i, std::uint32_t(i + 1 + t), dxs[t], dys[t], dzs[t], b.step}, b.slot + t);
+      std::size_t k2 = 0;
+      for (std::size_t t = 0; t < m; ++t)
+        if (r2s[t] < b.rc2) blk2[k2++] = blk2[t];
+    }
+    const double rc2 = b.rc2;
+    std::uint32_t* js = b.j;
+    std::size_t k = 0;
+    for (std::size_t t = 0; t < m; ++t) {
+      if (!(r2s[t] < rc2)) continue;
+      js[k] = std::uint32_t(i + 1 + t);
+      dxs[k] = dxs[t], dys[k] = dys[t], dzs[k] = dzs[t], r2s[k] = r2s[t], blk[k] = blk[t];
+      ++k;
+    }
+    noise_.zetas(blk, sc.blk2.data(), b.zeta, k);
+    return k;
+  }
+
+  void bead(const BeadBatch& b, int thread) override {
+    const std::size_t k = b.k;
+    Scratch& sc = scratch(thread, k);
+    Block* blk = sc.blk.data();
+    for (std::size_t t = 0; t < k; ++t) {
+      const rng::PairInput p{b.i, b.j[t], b.dx[t], b.dy[t], b.dz[t], b.step};
+      blk[t] = noise_.raw(rng::canonical(p), b.slot + t);
+    }
+    if (noise_.feed() == rng::Feed::blocks)
+      for (std::size_t t = 0; t < k; ++t) {
+        const rng::PairInput p{b.i, b.j[t], b.dx[t], b.dy[t], b.dz[t], b.step};
+        sc.blk2[t] = noise_.raw2(rng::canonical(p), b.slot + t);
+      }
+    noise_.zetas(blk, sc.blk2.data(), b.zeta, k);
+    if (b.tap[0])
+      for (int w = 0; w < Noise::kWords; ++w)
+        for (std::size_t t = 0; t < k; ++t) b.tap[w][t] = blk[t][w];
+  }
+
+  void pair(const rng::PairInput& p, std::size_t slot, std::uint64_t* words, double& zeta) const override {
+    const Block blk = noise_.raw(p, slot);
+    const Block blk2 = noise_.feed() == rng::Feed::blocks ? noise_.raw2(p, slot) : blk;
+    noise_.zetas(&blk, &blk2, &zeta, 1);
+    for (int w = 0; w < Noise::kWords; ++w) words[w] = blk[w];
+  }
+
+  double ns_per_number() const override { return calibrate(false); }
+  double ns_per_zeta() const override { return calibrate(true); }
+
+ private:
+  using Block = typename Noise::Block;
+  struct Scratch {
+    std::vector<Block> blk, blk2;  // the pairs' blocks; their second blocks (blocks feed)
+  };
+
+  Scratch& scratch(int thread, std::size_t m) {
+    Scratch& sc = scratch_[std::size_t(thread)];
+    if (sc.blk.size() < m) sc.blk.resize(m), sc.blk2.resize(m);
+    return sc;
+  }
+
+  // Best of 5 repetitions of 4096 calls.
+  double calibrate(bool zeta_only) const {
+    if constexpr (Noise::kZero) {
+      return 0.0;
+    } else {
+      constexpr std::size_t kCalls = 4096;
+      Noise noise = noise_;
+      std::vector<double> dx(kCalls), dy(kCalls), dz(kCalls), zeta(kCalls);
+      std::vector<Block> blk(kCalls), blk2(kCalls);
+      for (std::size_t t = 0; t < kCalls; ++t) dx[t] = 0.9 - 4e-4 * t, dy[t] = 0.25 - 1e-4 * t, dz[t] = 1e-4 * t - 0.1;
+      const bool two = noise.feed() == rng::Feed::blocks;
+      auto fill = [&] {
+        if constexpr (Noise::kStream) noise.begin_step(kCalls);
+        for (std::size_t t = 0; t < kCalls; ++t)
+          blk[t] = noise.raw(rng::PairInput{7, std::uint32_t(8 + t), dx[t], dy[t], dz[t], 99}, t);
+      };
+      fill();  // warm-up, and real blocks for the ζ timing (the stream's second buffer too)
+      if (two)
+        for (std::size_t t = 0; t < kCalls; ++t)
+          blk2[t] = noise.raw2(rng::PairInput{7, std::uint32_t(8 + t), dx[t], dy[t], dz[t], 99}, t);
+      double best = std::numeric_limits<double>::infinity();
+      volatile double sink = 0;
+      for (int rep = 0; rep < 5; ++rep) {
+        double acc = 0;
+        const auto t0 = std::chrono::steady_clock::now();
+        if (zeta_only)
+          noise.zetas(blk.data(), blk2.data(), zeta.data(), kCalls), acc = zeta[kCalls / 2];
+        else
+          fill(), acc = double(blk[kCalls / 2][0] & 1);
+        const auto t1 = std::chrono::steady_clock::now();
+        sink = sink + acc;
+        best = std::min(best, std::chrono::duration<double, std::nano>(t1 - t0).count() / kCalls);
+      }
+      return best;
+    }
+  }
+
+  Noise noise_;
+  std::vector<Scratch> scratch_;
+};
+
+template <class Noise>
+std::unique_ptr<NoiseKernel> make_noise_kernel(Noise noise) {
+  return std::make_unique<NoiseKernelOf<Noise>>(std::move(noise));
+}
+
+}  // namespace dpdrng::dpd

@@ -1,0 +1,499 @@
+// The pair loop around a noise kernel (pair_loop.hpp): scheduling, sorting, gather and scatter, forces and
+// reductions, compiled once for every noise.
+#include "dpdrng/dpd/pair_loop.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cmath>
+
+#include "dpdrng/dpd/neighbours.hpp"
+#include "dpdrng/dpd/spin.hpp"
+
+namespace dpdrng::dpd {
+
+namespace {
+
+class PairLoop final : public PairForces {
+ public:
+  PairLoop(std::unique_ptr<NoiseKernel> noise, const DpdKernel& kernel, PairMode mode, int threads, std::size_t n,
+           std::vector<std::pair<std::uint32_t, std::uint32_t>> tap_pairs)
+      : noise_(std::move(noise)), zero_(noise_->zero()), words_(noise_->words()), k_(kernel), mode_(mode),
+        threads_(threads > 0 ? threads : omp_get_max_threads()), tap_pairs_(std::move(tap_pairs)) {
+    scratch_.resize(threads_);
+    noise_->threads(threads_);
+    if (mode_ == PairMode::all) {
+      rows_.resize(n);
+      for (auto& sc : scratch_) sc.resize(n);
+    }
+  }
+
+  int words_per_pair() const override { return words_; }
+  std::uint64_t list_builds() const override { return cells_.builds(); }
+
+  ForceSums compute(System& s, VelocityView v, std::uint64_t step, bool tap_raw, bool tap_series, bool tap_zeta,
+                    Taps& taps) override {
+    const std::size_t n = s.size();
+    RawTap* tap = nullptr;
+    if (tap_raw && !zero_) {
+      tap = &taps.raw.emplace_back();
+      tap->step = static_cast<std::int64_t>(step);
+      tap->words_per_pair = words_;
+    }
+    const Ctx c{s, v, step, tap, tap_zeta && !zero_};
+    // Generator calls per pair: the blocks feed hashes a second block.
+    const std::uint64_t calls = zero_ ? 0 : noise_->feed() == rng::Feed::blocks ? 2 : 1;
+    ForceSums sums;
+    if (mode_ == PairMode::all) {
+      const std::size_t slots = n * (n - 1) / 2;
+      if (noise_->stream()) noise_->begin_step(slots);
+      if (tap)
+        for (int w = 0; w < words_; ++w) tap->words[w].assign(slots, 0);
+      if (zero_)
+        all_rows<true>(c);
+      else
+        all_rows<false>(c);
+      sums = reduce(s);
+      sums.numbers = calls * slots;
+    } else {
+      sums = compute_cells(c);
+      sums.numbers = calls * sums.in_range;
+    }
+    if (tap_series && !zero_) record_series(s, step, taps);
+    return sums;
+  }
+
+  double ns_per_number() const override { return noise_->ns_per_number(); }
+  double ns_per_zeta() const override { return noise_->ns_per_zeta(); }
+
+ private:
+  struct Rec {
+    std::uint32_t j;
+    double fx, fy, fz;
+  };
+  struct Row {
+    std::vector<Rec> rec;
+    std::uint32_t count = 0;
+    double w[3] = {0, 0, 0}, wc[3] = {0, 0, 0};
+    double min_r2 = 0;
+    ZetaSums zeta;
+  };
+  struct Scratch {
+    std::vector<double> dx, dy, dz, r2;
+    std::vector<std::uint32_t> j, ids;  // partners (sorted indices in cells mode); cells: their bead ids
+    std::vector<double> zeta;
+    std::vector<double> cx, cy, cz;   // cells: coordinates of a cell's candidates, contiguous
+    std::vector<std::uint32_t> cand;  // cells: their sorted indices
+    std::vector<std::uint64_t> tap[2];  // cells: a bead's tapped words
+    void resize(std::size_t n) {
+      dx.resize(n), dy.resize(n), dz.resize(n), r2.resize(n), j.resize(n), ids.resize(n);
+      zeta.resize(n);
+      cx.resize(n), cy.resize(n), cz.resize(n), cand.resize(n);
+    }
+  };
+  struct CellSums {
+    double w[3] = {0, 0, 0}, wc[3] = {0, 0, 0};
+    double min_r2 = 0;
+    std::uint64_t count = 0;
+    ZetaSums zeta;
+  };
+  struct Ctx {
+    System& s;
+    VelocityView v;
+    std::uint64_t step;
+    RawTap* tap;
+    bool tap_zeta;
+  };
+
+  template <bool Zero>
+  void all_rows(const Ctx& c) {
+    const std::size_t n = c.s.size();
+#pragma omp parallel for num_threads(threads_) schedule(dynamic, 16)
+    for (std::size_t i = 0; i < n; ++i) row_all<Zero>(c, static_cast<std::uint32_t>(i), omp_get_thread_num());
+  }
+
+  // Pass 2: forces for the m in-range pairs held in sc (partners sc.j, ζ in sc.zeta unless Zero).
+  template <bool Zero>
+  void forces(const Ctx& c, std::uint32_t i, std::size_t m, Scratch& sc, Row& row) const {
+    const System& s = c.s;
+    const double vxi = c.v.vx[i], vyi = c.v.vy[i], vzi = c.v.vz[i];
+    const double* arow = &k_.a[std::size_t(s.type[i]) * k_.ntypes];
+    const double rc = k_.rc, gamma = k_.gamma, sig = k_.sigma * k_.inv_sqrt_dt;
+    double fx = 0, fy = 0, fz = 0, w0 = 0, w1 = 0, w2 = 0, c0 = 0, c1 = 0, c2 = 0;
+    double min_r2 = k_.rc2();
+    if (row.rec.size() < m) row.rec.resize(m);
+    row.zeta = ZetaSums{};
+    if (c.tap_zeta) row.zeta.add(sc.zeta.data(), m);
+    for (std::size_t t = 0; t < m; ++t) {
+      const std::uint32_t j = sc.j[t];
+      const double dx = sc.dx[t], dy = sc.dy[t], dz = sc.dz[t], r2 = sc.r2[t];
+      // The ζ = 0 baseline keeps the constant, as the benchmark's floor must.
+      const double zeta = Zero ? 0.0 : sc.zeta[t];
+      const PairForce pf = DpdKernel::evaluate(r2, dx, dy, dz, c.v.vx[j] - vxi, c.v.vy[j] - vyi, c.v.vz[j] - vzi,
+                                               arow[s.type[j]], zeta, rc, gamma, sig);
+      const double gx = pf.s * dx, gy = pf.s * dy, gz = pf.s * dz;
+      fx += gx, fy += gy, fz += gz;
+      row.rec[t] = {j, gx, gy, gz};
+      // r_ij = −d and F_ij = s·d: (r_ij)_α (F_ij)_α = −s d_α²; conservative: a w d_α² / r.
+      w0 -= gx * dx, w1 -= gy * dy, w2 -= gz * dz;
+      const double cw = pf.a_w / r2;
+      c0 += cw * dx * dx, c1 += cw * dy * dy, c2 += cw * dz * dz;
+      min_r2 = std::min(min_r2, r2);
+    }
+    c.s.fx[i] = fx, c.s.fy[i] = fy, c.s.fz[i] = fz;
+    row.count = static_cast<std::uint32_t>(m);
+    row.w[0] = w0, row.w[1] = w1, row.w[2] = w2;
+    row.wc[0] = c0, row.wc[1] = c1, row.wc[2] = c2;
+    row.min_r2 = min_r2;
+  }
+
+  template <bool Zero>
+  void row_all(const Ctx& c, std::uint32_t i, int thread) {
+    Scratch& sc = scratch_[std::size_t(thread)];
+    const System& s = c.s;
+    const std::size_t n = s.size();
+    const std::size_t m = n - i - 1, base = pair_slot(i, i + 1, n);
+    geometry(s.x.data() + i + 1, s.y.data() + i + 1, s.z.data() + i + 1, s.x[i], s.y[i], s.z[i], s.box, m,
+             sc.dx.data(), sc.dy.data(), sc.dz.data(), sc.r2.data());
+    double* dxs = sc.dx.data();
+    double* dys = sc.dy.data();
+    double* dzs = sc.dz.data();
+    double* r2s = sc.r2.data();
+    const double rc2 = k_.rc2();
+    std::size_t k = 0;
+    if constexpr (!Zero) {
+      RowBatch b{i, m, dxs, dys, dzs, r2s, sc.j.data(), rc2, c.step, base, {nullptr, nullptr}, sc.zeta.data()};
+      if (c.tap)
+        for (int w = 0; w < words_; ++w) b.tap[w] = c.tap->words[w].data() + base;
+      forces<Zero>(c, i, noise_->row(b, thread), sc, rows_[i]);
+      return;
+    }
+    // Compact the pairs inside r_c in place (t' ≤ t), keeping their order.
+    for (std::size_t t = 0; t < m; ++t) {
+      if (!(r2s[t] < rc2)) continue;
+      sc.j[k] = std::uint32_t(i + 1 + t);
+      dxs[k] = dxs[t], dys[k] = dys[t], dzs[k] = dzs[t], r2s[k] = r2s[t];
+      ++k;
+    }
+    forces<Zero>(c, i, k, sc, rows_[i]);
+  }
+
+  void resize_sorted(std::size_t n) {
+    for (auto* a : {&xs_, &ys_, &zs_, &vxs_, &vys_, &vzs_, &fxs_, &fys_, &fzs_}) a->resize(n);
+    types_.resize(n);
+  }
+
+  // Sorted copies of what the pairs read (positions, the dissipative force's velocities, types),
+  // and zeroed sorted forces, by the team of the sort: each thread copies the beads of the layers it will own
+  // (own_layers), so they start in its cache. Each sorted slot is written once.
+  void gather(const System& s, VelocityView v) {
+    const auto [z0, z1] = own_layers(omp_get_thread_num(), omp_get_num_threads());
+    const int per_layer = cells_.layer_cells();
+    const std::uint32_t* order = cells_.order().data();
+    for (std::uint32_t k = cells_.begin(z0 * per_layer), e = cells_.begin(z1 * per_layer); k < e; ++k) {
+      const std::uint32_t i = order[k];
+      xs_[k] = s.x[i], ys_[k] = s.y[i], zs_[k] = s.z[i];
+      vxs_[k] = v.vx[i], vys_[k] = v.vy[i], vzs_[k] = v.vz[i];
+      fxs_[k] = 0, fys_[k] = 0, fzs_[k] = 0;
+      types_[k] = s.type[i];
+    }
+  }
+
+  // Thread t of nt owns a contiguous block of layers: its layers' writes to the next layer then stay on the
+  // same core, except at the block's end.
+  std::pair<int, int> own_layers(int t, int nt) const {
+    const int layers = cells_.layers();
+    return {layers * t / nt, layers * (t + 1) / nt};
+  }
+
+  // Candidates of cell c, contiguous in sc: its own beads first, then those of its forward neighbours.
+  std::size_t candidates(int c, Scratch& sc) const {
+    const std::int32_t* fw = cells_.forward(c);
+    const int nf = cells_.forward_count();
+    std::size_t m = cells_.end(c) - cells_.begin(c);
+    for (int f = 0; f < nf; ++f) m += cells_.end(fw[f]) - cells_.begin(fw[f]);
+    if (sc.cand.size() < m) sc.resize(m);
+    std::size_t t = 0;
+    auto add = [&](int cell) {
+      for (std::uint32_t k = cells_.begin(cell); k < cells_.end(cell); ++k, ++t)
+        sc.cand[t] = k, sc.cx[t] = xs_[k], sc.cy[t] = ys_[k], sc.cz[t] = zs_[k];
+    };
+    add(c);
+    for (int f = 0; f < nf; ++f) add(fw[f]);
+    return m;
+  }
+
+  // Bead q of the cell (sorted index a) against the candidates after it: the pairs inside r_c, compacted
+  // into sc (partners' sorted indices in sc.j). Returns their number.
+  std::size_t in_range(const Box& box, std::uint32_t a, std::size_t q, std::size_t m, Scratch& sc) const {
+    const std::size_t len = m - q - 1;
+    geometry(sc.cx.data() + q + 1, sc.cy.data() + q + 1, sc.cz.data() + q + 1, xs_[a], ys_[a], zs_[a], box, len,
+             sc.dx.data(), sc.dy.data(), sc.dz.data(), sc.r2.data());
+    const double rc2 = k_.rc2();
+    const std::uint32_t* cand = sc.cand.data() + q + 1;
+    std::size_t k = 0;
+    for (std::size_t t = 0; t < len; ++t) {
+      sc.j[k] = cand[t];
+      sc.dx[k] = sc.dx[t], sc.dy[k] = sc.dy[t], sc.dz[k] = sc.dz[t], sc.r2[k] = sc.r2[t];
+      k += sc.r2[t] < rc2 ? 1 : 0;  // branch-free compaction: the slot is overwritten unless the pair is in range
+    }
+    return k;
+  }
+
+  std::uint64_t count_cell(const Box& box, int c, Scratch& sc) const {
+    const std::size_t m = candidates(c, sc), own = cells_.end(c) - cells_.begin(c);
+    std::uint64_t count = 0;
+    for (std::size_t q = 0; q < own; ++q) count += in_range(box, cells_.begin(c) + std::uint32_t(q), q, m, sc);
+    return count;
+  }
+
+  // All pairs owned by cell c. Writes only to the beads of c and its forward neighbours.
+  template <bool Zero>
+  void do_cell(const Ctx& cx, int c, int thread, bool tap) {
+    Scratch& sc = scratch_[std::size_t(thread)];
+    const Box& box = cx.s.box;
+    const std::size_t m = candidates(c, sc), own = cells_.end(c) - cells_.begin(c);
+    const double rc = k_.rc, gamma = k_.gamma, sig = k_.sigma * k_.inv_sqrt_dt;
+    const std::uint32_t* ids = cells_.order().data();
+    CellSums cs;
+    cs.min_r2 = k_.rc2();
+    std::uint64_t slot = slot_base_.empty() ? 0 : slot_base_[c];
+    if (tap) {
+      for (int w = 0; w < words_; ++w) cell_tap_[c][w].clear();
+      for (int w = 0; w < words_; ++w)
+        if (sc.tap[w].size() < m) sc.tap[w].resize(m);
+    }
+    for (std::size_t q = 0; q < own; ++q) {
+      const std::uint32_t a = cells_.begin(c) + std::uint32_t(q);
+      const std::size_t k = in_range(box, a, q, m, sc);
+      if constexpr (!Zero) {
+        for (std::size_t t = 0; t < k; ++t) sc.ids[t] = ids[sc.j[t]];
+        BeadBatch b{ids[a], sc.ids.data(), k, sc.dx.data(), sc.dy.data(), sc.dz.data(), cx.step, slot,
+                    {nullptr, nullptr}, sc.zeta.data()};
+        if (tap)
+          for (int w = 0; w < words_; ++w) b.tap[w] = sc.tap[w].data();
+        noise_->bead(b, thread);
+        if (cx.tap_zeta) cs.zeta.add(sc.zeta.data(), k);
+        if (tap)
+          for (int w = 0; w < words_; ++w) cell_tap_[c][w].insert(cell_tap_[c][w].end(), sc.tap[w].begin(), sc.tap[w].begin() + k);
+      }
+      slot += k;
+      const double vxa = vxs_[a], vya = vys_[a], vza = vzs_[a];
+      const double* arow = &k_.a[std::size_t(types_[a]) * k_.ntypes];
+      double fx = 0, fy = 0, fz = 0;
+      for (std::size_t t = 0; t < k; ++t) {
+        const std::uint32_t b = sc.j[t];
+        const double dx = sc.dx[t], dy = sc.dy[t], dz = sc.dz[t], r2 = sc.r2[t];
+        const double zeta = Zero ? 0.0 : sc.zeta[t];
+        const PairForce pf = DpdKernel::evaluate(r2, dx, dy, dz, vxs_[b] - vxa, vys_[b] - vya, vzs_[b] - vza,
+                                                 arow[types_[b]], zeta, rc, gamma, sig);
+        const double gx = pf.s * dx, gy = pf.s * dy, gz = pf.s * dz;
+        fx += gx, fy += gy, fz += gz;
+        fxs_[b] -= gx, fys_[b] -= gy, fzs_[b] -= gz;
+        // r_ab = −d and F_ab = s·d: (r_ab)_α (F_ab)_α = −s d_α²; conservative: a w d_α² / r.
+        cs.w[0] -= gx * dx, cs.w[1] -= gy * dy, cs.w[2] -= gz * dz;
+        const double cw = pf.a_w / r2;
+        cs.wc[0] += cw * dx * dx, cs.wc[1] += cw * dy * dy, cs.wc[2] += cw * dz * dz;
+        cs.min_r2 = std::min(cs.min_r2, r2);
+      }
+      fxs_[a] += fx, fys_[a] += fy, fzs_[a] += fz;
+      cs.count += k;
+    }
+    cell_sums_[c] = cs;
+  }
+
+  ForceSums compute_cells(const Ctx& cx) {
+    System& s = cx.s;
+    const bool team = s.size() >= SortedCells::kParallelBeads;
+    cells_.prepare(s, k_.rc, team ? threads_ : 1);
+    resize_sorted(s.size());
+    const int nc = cells_.cells();
+    cell_sums_.resize(std::size_t(nc));
+    const bool tap = cx.tap != nullptr;
+    if (tap) cell_tap_.resize(std::size_t(nc));
+    const bool stream = noise_->stream();
+    slot_base_.assign(stream ? std::size_t(nc) + 1 : 0, 0);
+    // One region for the step's pair forces: three barriers (inside the sort, after it, after the gather;
+    // the stream reference adds two), then the layers, which wait for their neighbours only, then the join.
+#pragma omp parallel num_threads(threads_) if (team)
+    {
+      cells_.sort(s);
+      // The team actually granted, which OMP_THREAD_LIMIT or an enclosing region can make smaller than asked:
+      // a queue without a thread behind it could hold an even layer that an odd one waits for forever.
+#pragma omp single
+      reset_layers(omp_get_num_threads());
+      gather(s, cx.v);
+#pragma omp barrier
+      if (stream) number_pairs(s.box);
+      if (zero_)
+        run_layers<true>(cx, tap);
+      else
+        run_layers<false>(cx, tap);
+    }
+    ForceSums sums;
+    sums.min_r2 = k_.rc2();
+    for (const CellSums& cs : cell_sums_) {
+      for (int a = 0; a < 3; ++a) sums.virial[a] += cs.w[a], sums.virial_cons[a] += cs.wc[a];
+      sums.min_r2 = std::min(sums.min_r2, cs.min_r2);
+      sums.in_range += cs.count;
+      sums.zeta.merge(cs.zeta);
+    }
+    if (tap)
+      for (int c = 0; c < nc; ++c)
+        for (int w = 0; w < words_; ++w)
+          cx.tap->words[w].insert(cx.tap->words[w].end(), cell_tap_[c][w].begin(), cell_tap_[c][w].end());
+    return sums;
+  }
+
+  // The stream reference needs every pair's slot, in the fixed pair order, before any layer runs.
+  void number_pairs(const Box& box) {
+    const int nc = cells_.cells();
+#pragma omp for schedule(dynamic, 8)
+    for (int c = 0; c < nc; ++c) slot_base_[c + 1] = count_cell(box, c, scratch_[omp_get_thread_num()]);
+#pragma omp single
+    {
+      for (int c = 0; c < nc; ++c) slot_base_[c + 1] += slot_base_[c];
+      noise_->begin_step(slot_base_[nc]);
+    }
+  }
+
+  // Each worker's queue of layers: its own block's even layers, then its odd ones (a single layer when the box
+  // has no grid). A box with few layers per colour runs on one worker (the result does not depend on the
+  // team size, so this choice is free). Every worker must be a thread of the team that runs the layers.
+  void reset_layers(int team) {
+    const int layers = cells_.layers(), colours = cells_.colours();
+    workers_ = layers / colours >= 2 * team ? team : 1;
+    items_.clear(), queue_.assign(std::size_t(workers_) + 1, 0), cursor_.assign(std::size_t(workers_) * kLine, 0);
+    for (int w = 0; w < workers_; ++w) {
+      const auto [z0, z1] = own_layers(w, workers_);
+      for (int colour = 0; colour < colours; ++colour)
+        for (int z = z0; z < z1; ++z)
+          if (z % colours == colour) items_.push_back(z);
+      queue_[w + 1] = int(items_.size());
+      cursor_[std::size_t(w) * kLine] = queue_[w];
+    }
+    done_.assign(std::size_t(layers), 0);
+    pending_.assign(std::size_t(layers), 2);
+  }
+
+  // The next layer for thread t: from its own queue, else taken from another worker's (in that queue's
+  // order, so every even layer is claimed before any odd one of the same queue), or −1 when all are claimed.
+  int claim(int t) {
+    for (int u = 0; u < workers_; ++u) {
+      const int w = (t + u) % workers_;
+      const int q = std::atomic_ref<int>(cursor_[std::size_t(w) * kLine]).fetch_add(1, std::memory_order_relaxed);
+      if (q < queue_[w + 1]) return items_[q];
+    }
+    return -1;
+  }
+
+  // Layer z's cells write forces to layers z and z + 1 only, so the even layers run side by side, and an odd
+  // layer may start once its two even neighbours are done: the same order of contributions for every bead
+  // as two colours with a barrier between them (even layers first), without the barrier: a thread that
+  // finishes early, or whose partner the host has paused, takes the other's remaining layers. No claimed
+  // even layer waits for anything, so an odd one's wait always ends. A layer's forces are final once it
+  // and the layer before it are done; the thread that completes the second copies them to the System.
+  template <bool Zero>
+  void run_layers(const Ctx& cx, bool tap) {
+    const int layers = cells_.layers(), per_layer = cells_.layer_cells();
+    const int thread = omp_get_thread_num();
+    if (thread >= workers_) return;
+    for (int z; (z = claim(thread)) >= 0;) {
+      if (z % cells_.colours() != 0) await_layer(z - 1), await_layer((z + 1) % layers);
+      for (int c = z * per_layer; c < (z + 1) * per_layer; ++c) do_cell<Zero>(cx, c, thread, tap);
+      std::atomic_ref<int>(done_[z]).store(1, std::memory_order_release);
+      contributed(cx.s, z), contributed(cx.s, (z + 1) % layers);
+    }
+  }
+
+  void await_layer(int z) {
+    std::atomic_ref<int> done(done_[z]);
+    while (done.load(std::memory_order_acquire) == 0) cpu_relax();
+  }
+
+  // One of layer z's two contributors is done; the thread completing the second scatters the layer.
+  void contributed(System& s, int z) {
+    if (std::atomic_ref<int>(pending_[z]).fetch_sub(1, std::memory_order_acq_rel) != 1) return;
+    const int per_layer = cells_.layer_cells();
+    const std::uint32_t* order = cells_.order().data();
+    for (std::uint32_t k = cells_.begin(z * per_layer), e = cells_.end((z + 1) * per_layer - 1); k < e; ++k) {
+      const std::uint32_t i = order[k];
+      s.fx[i] = fxs_[k], s.fy[i] = fys_[k], s.fz[i] = fzs_[k];
+    }
+  }
+
+  ForceSums reduce(System& s) const {
+    ForceSums sums;
+    sums.min_r2 = k_.rc2();
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      const Row& row = rows_[i];
+      for (std::uint32_t t = 0; t < row.count; ++t) {
+        const Rec& r = row.rec[t];
+        s.fx[r.j] -= r.fx, s.fy[r.j] -= r.fy, s.fz[r.j] -= r.fz;
+      }
+      for (int a = 0; a < 3; ++a) sums.virial[a] += row.w[a], sums.virial_cons[a] += row.wc[a];
+      sums.min_r2 = std::min(sums.min_r2, row.min_r2);
+      sums.in_range += row.count;
+      sums.zeta.merge(row.zeta);
+    }
+    return sums;
+  }
+
+  // Hashes are pure functions of the pair input, so a tapped pair's block is recomputed here from the same
+  // separation the loop used; the stream reference reads the pair's slot (all mode only, checked by validate).
+  void record_series(const System& s, std::uint64_t step, Taps& taps) const {
+    const double Lx = s.box.L[0], Ly = s.box.L[1], Lz = s.box.L[2];
+    if (taps.series.size() != tap_pairs_.size()) {
+      taps.series.resize(tap_pairs_.size());
+      for (std::size_t q = 0; q < tap_pairs_.size(); ++q) {
+        taps.series[q].i = tap_pairs_[q].first, taps.series[q].j = tap_pairs_[q].second;
+        taps.series[q].words_per_pair = words_;
+      }
+    }
+    for (auto& ser : taps.series) {
+      const std::uint32_t i = ser.i, j = ser.j;
+      const double dx = min_image(s.x[j] - s.x[i], Lx, Lx / 2), dy = min_image(s.y[j] - s.y[i], Ly, Ly / 2),
+                   dz = min_image(s.z[j] - s.z[i], Lz, Lz / 2);
+      std::uint64_t words[2] = {0, 0};
+      double zeta = 0;
+      noise_->pair(rng::PairInput{i, j, dx, dy, dz, step}, pair_slot(i, j, s.size()), words, zeta);
+      ser.steps.push_back(static_cast<std::int64_t>(step));
+      for (int w = 0; w < words_; ++w) ser.words[w].push_back(words[w]);
+      ser.zeta.push_back(zeta);
+    }
+  }
+
+  std::unique_ptr<NoiseKernel> noise_;
+  bool zero_;
+  int words_;
+  DpdKernel k_;
+  PairMode mode_;
+  int threads_;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> tap_pairs_;
+  std::vector<Row> rows_;  // all mode
+  std::vector<Scratch> scratch_;
+  // cells mode
+  SortedCells cells_;
+  std::vector<double> xs_, ys_, zs_, vxs_, vys_, vzs_, fxs_, fys_, fzs_;
+  std::vector<std::uint8_t> types_;
+  std::vector<CellSums> cell_sums_;
+  std::vector<std::uint64_t> slot_base_;
+  // The layers' schedule (reset_layers), used through atomic_ref: per layer, done and contributors pending;
+  // per worker, its queue items_[queue_[w], queue_[w + 1]) and its cursor, a cache line apart from the others.
+  static constexpr std::size_t kLine = 16;
+  int workers_ = 1;
+  std::vector<int> done_, pending_, items_, queue_, cursor_;
+  std::vector<std::array<std::vector<std::uint64_t>, 2>> cell_tap_;
+};
+
+}  // namespace
+
+std::unique_ptr<PairForces> make_pair_loop(std::unique_ptr<NoiseKernel> noise, const DpdKernel& kernel,
+                                           PairMode mode, int threads, std::size_t n,
+                                           std::vector<std::pair<std::uint32_t, std::uint32_t>> tap_pairs) {
+  return std::make_unique<PairLoop>(std::move(noise), kernel, mode, threads, n, std::move(tap_pairs));
+}
+
+}  // namespace dpdrng::dpd
