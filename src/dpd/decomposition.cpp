@@ -186,7 +186,7 @@ class Decomposed final : public DecomposedForces {
   static void add_virial(ForceSums& sums, const PairForce& f, const PairView& v, double r2) {
     for (int c = 0; c < 3; ++c) {
       sums.virial[c] -= f.s * v.d[c] * v.d[c];
-      sums.virial_cons[c] += f.a_w / r2 * v.d[c] * v.d[c];
+      sums.virial_cons[c] += DpdKernel::conservative_weight(f, r2) * v.d[c] * v.d[c];
     }
   }
 

@@ -138,7 +138,7 @@ class PairLoop final : public PairForces {
       row.rec[t] = {j, gx, gy, gz};
       // r_ij = −d and F_ij = s·d: (r_ij)_α (F_ij)_α = −s d_α²; conservative: a w d_α² / r.
       w0 -= gx * dx, w1 -= gy * dy, w2 -= gz * dz;
-      const double cw = pf.a_w / r2;
+      const double cw = DpdKernel::conservative_weight(pf, r2);
       c0 += cw * dx * dx, c1 += cw * dy * dy, c2 += cw * dz * dz;
       min_r2 = std::min(min_r2, r2);
     }
@@ -294,7 +294,7 @@ class PairLoop final : public PairForces {
         fxs_[b] -= gx, fys_[b] -= gy, fzs_[b] -= gz;
         // r_ab = −d and F_ab = s·d: (r_ab)_α (F_ab)_α = −s d_α²; conservative: a w d_α² / r.
         cs.w[0] -= gx * dx, cs.w[1] -= gy * dy, cs.w[2] -= gz * dz;
-        const double cw = pf.a_w / r2;
+        const double cw = DpdKernel::conservative_weight(pf, r2);
         cs.wc[0] += cw * dx * dx, cs.wc[1] += cw * dy * dy, cs.wc[2] += cw * dz * dz;
         cs.min_r2 = std::min(cs.min_r2, r2);
       }

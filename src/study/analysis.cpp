@@ -215,7 +215,7 @@ std::string VariantKey::label() const {
 }
 
 VariantKey variant_of(const Cell& c) {
-  return {c.generator, c.rounds, c.noise(), c.seeding, c.dt, c.reference, c.feed};
+  return {c.generator, c.rounds, c.noise(), c.seeding, c.dt, c.reference, c.feed, c.integrator};
 }
 
 double curve_error(const std::vector<double>& curve, const std::vector<double>& ref, double threshold) {
@@ -265,7 +265,9 @@ ReplicaMean replica_mean(const std::vector<const CellResult*>& cells, const std:
 
 const VariantReport* Analysis::reference_for(const VariantKey& k) const {
   for (const auto& v : variants)
-    if (v.key.reference && v.key.distribution == k.distribution && v.key.dt == k.dt) return &v;
+    if (v.key.reference && v.key.distribution == k.distribution && v.key.dt == k.dt &&
+        v.key.integrator == k.integrator)
+      return &v;
   return nullptr;
 }
 

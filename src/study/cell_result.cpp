@@ -64,6 +64,8 @@ void write_cell(hid_t g, const CellResult& r) {
   h5::write_attribute(g, "cell.feed", c.feed);
   h5::write_attribute(g, "cell.seeding", c.seeding);
   h5::write_attribute(g, "cell.dt", c.dt);
+  // Only when the sweep names one: cells of studies without the factor keep their records byte for byte.
+  if (!c.integrator.empty()) h5::write_attribute(g, "cell.integrator", c.integrator);
   h5::write_attribute(g, "cell.replica", std::int64_t{c.replica});
   h5::write_attribute(g, "cell.reference", std::int64_t{c.reference});
   h5::write_attribute(g, "cell.nist", std::int64_t{c.nist});
@@ -96,6 +98,7 @@ CellResult read_cell(hid_t g) {
   if (a.count("cell.feed")) c.feed = get<std::string>(a, "cell.feed");  // absent in stores older than the feed
   c.seeding = get<std::string>(a, "cell.seeding");
   c.dt = get<double>(a, "cell.dt");
+  if (a.count("cell.integrator")) c.integrator = get<std::string>(a, "cell.integrator");
   c.replica = static_cast<int>(get<std::int64_t>(a, "cell.replica"));
   c.reference = get<std::int64_t>(a, "cell.reference") != 0;
   c.nist = get<std::int64_t>(a, "cell.nist") != 0;

@@ -11,6 +11,7 @@
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/dpd/bilayer.hpp"
 #include "dpdrng/rng/registry.hpp"
+#include "dpdrng/study/sweep.hpp"
 #include "toml_section.hpp"
 
 namespace dpdrng::study {
@@ -35,6 +36,17 @@ std::vector<std::string> valid_feeds(Section& s, const std::string& key, std::ve
   if (v.empty()) s.fail(key, "needs at least one feed");
   for (const auto& f : v) try {
       rng::parse_feed(f);
+    } catch (const InputError& e) {
+      s.fail(key, e.what());
+    }
+  check_unique(s, key, v);
+  return v;
+}
+
+std::vector<std::string> valid_integrators(Section& s, const std::string& key, std::vector<std::string> v) {
+  if (v.empty()) s.fail(key, "needs at least one integrator (leave the key out for MVV at the scene's lambda)");
+  for (const auto& name : v) try {
+      parse_integrator_spec(name);
     } catch (const InputError& e) {
       s.fail(key, e.what());
     }
@@ -112,6 +124,11 @@ std::string fnv1a64_hex(const std::string& text) {
   return buf;
 }
 
+long SceneParams::steps_at(double dt) const { return time > 0 ? std::lround(time / dt) : steps; }
+long SceneParams::equilibrate_at(double dt) const {
+  return time > 0 ? std::lround(equilibrate_time / dt) : equilibrate;
+}
+
 const char* to_string(ErrorControl e) { return e == ErrorControl::study ? "study" : "variant"; }
 
 nlohmann::json StudyConfig::canonical() const {
@@ -143,6 +160,8 @@ nlohmann::json StudyConfig::canonical() const {
   // Present only when it is not the default, so that configs written before the key keep their hash.
   if (tests.error_control != ErrorControl::study) j["tests"]["error_control"] = to_string(tests.error_control);
   if (feeds != std::vector<std::string>{"halves"}) j["feeds"] = feeds;
+  if (!integrators.empty()) j["integrators"] = integrators;
+  if (scene.time > 0) j["scene"]["time"] = scene.time, j["scene"]["equilibrate_time"] = scene.equilibrate_time;
   return j;
 }
 
@@ -173,6 +192,7 @@ StudyConfig parse_config(const std::string& toml_text, const std::string& origin
   c.distributions = valid_distributions(sw, "distributions", sw.strings("distributions", c.distributions));
   c.seedings = valid_seedings(sw, "seedings", sw.strings("seedings", c.seedings));
   c.feeds = valid_feeds(sw, "feeds", sw.strings("feeds", c.feeds));
+  if (sw.get("integrators")) c.integrators = valid_integrators(sw, "integrators", sw.strings("integrators", {}));
   const toml::array* gens = sw.array_of_tables("generator");
   if (!gens || gens->empty()) sw.fail("generator", "at least one [[sweep.generator]] is required");
   for (std::size_t k = 0; k < gens->size(); ++k) {
@@ -225,12 +245,29 @@ StudyConfig parse_config(const std::string& toml_text, const std::string& origin
   s.kT = sc.num("kT", s.kT, 0, 1e6, true);
   s.lambda = sc.num("lambda", s.lambda, 0, 1);
   s.dt = sc.numbers("dt", s.dt, 0, 10, true);
-  s.steps = sc.integer("steps", s.steps, 2, 1'000'000'000);
-  s.equilibrate = sc.integer("equilibrate", s.equilibrate, 0, 1'000'000'000);
-  if (s.equilibrate >= s.steps) sc.fail("equilibrate", "must be less than scene.steps");
+  if (sc.get("time")) {
+    if (bilayer) sc.fail("time", "is for the water scene (the bilayer runs scene.steps)");
+    if (sc.get("steps") || sc.get("equilibrate"))
+      sc.fail("time", "replaces steps and equilibrate (give time and equilibrate_time, or steps and equilibrate)");
+    s.time = sc.num("time", 0, 0, 1e9, true);
+    s.equilibrate_time = sc.num("equilibrate_time", 0.05 * s.time, 0, s.time);
+    for (double dt : s.dt) {
+      if (s.time / dt > 1e9) sc.fail("time", "gives more than 1e9 steps at dt = " + std::to_string(dt));
+      if (s.steps_at(dt) < 2) sc.fail("time", "gives fewer than 2 steps at dt = " + std::to_string(dt));
+      if (s.equilibrate_at(dt) >= s.steps_at(dt))
+        sc.fail("equilibrate_time", "leaves no production step at dt = " + std::to_string(dt));
+    }
+  } else {
+    if (sc.get("equilibrate_time")) sc.fail("equilibrate_time", "needs scene.time");
+    s.steps = sc.integer("steps", s.steps, 2, 1'000'000'000);
+    s.equilibrate = sc.integer("equilibrate", s.equilibrate, 0, 1'000'000'000);
+    if (s.equilibrate >= s.steps) sc.fail("equilibrate", "must be less than scene.steps");
+  }
   s.pairs = sc.str("pairs", s.pairs);
   if (s.pairs != "all" && s.pairs != "cells") sc.fail("pairs", "must be 'all' or 'cells'");
   sc.finish();
+  if (bilayer && !c.integrators.empty())
+    throw InputError(origin + ": sweep.integrators: the bilayer scene runs MVV at its lambda only (remove the key)");
 
   Section te = top.sub("tests");
   auto& t = c.tests;
@@ -245,7 +282,9 @@ StudyConfig parse_config(const std::string& toml_text, const std::string& origin
   // Bilayer cells measure physics only: the engine taps no raw numbers there, so the generators' own tests
   // default to off and asking for them is an error rather than an empty table.
   if (bilayer) t.chi2_steps = 0, t.ttest_pairs = 0;
-  const long production = s.steps - s.equilibrate;
+  // The shortest production of any Δt bounds what the tests may sample.
+  long production = s.steps - s.equilibrate;
+  for (double dt : s.dt) production = std::min(production, s.steps_at(dt) - s.equilibrate_at(dt));
   t.chi2_steps = te.integer("chi2_steps", t.chi2_steps, 0, production);
   const long pairs = static_cast<long>(s.particles) * (s.particles - 1) / 2;
   t.ttest_pairs = te.integer("ttest_pairs", t.ttest_pairs, 0, pairs);

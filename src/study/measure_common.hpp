@@ -22,8 +22,8 @@ void set_run(EngineConfig& c, const Cell& cell, const SceneParams& s, int thread
   c.gamma = s.gamma;
   c.lambda = s.lambda;
   c.dt = cell.dt;
-  c.steps = s.steps;
-  c.equilibrate = s.equilibrate;
+  c.steps = s.steps_at(cell.dt);
+  c.equilibrate = s.equilibrate_at(cell.dt);
   c.pairs = dpd::parse_pair_mode(s.pairs);
   c.generator = rng::validated(rng::GeneratorSpec{cell.generator, cell.rounds, rng::kPaperTeaKey});
   c.seeding = cell.reference ? rng::Seeding::distance : rng::parse_seeding(cell.seeding);  // ignored by a stream

@@ -14,10 +14,13 @@ namespace dpdrng::study {
 TapPlan plan_taps(const Cell& cell, const StudyConfig& config, int words_per_pair) {
   const auto& s = config.scene;
   const auto& t = config.tests;
-  const std::int64_t production = s.steps - s.equilibrate;
+  const std::int64_t steps = s.steps_at(cell.dt), equilibrate = s.equilibrate_at(cell.dt);
+  const std::int64_t production = steps - equilibrate;
   TapPlan plan;
+  // Shardlow's sweep is not tapped: its cells measure physics only.
+  if (integrator_of(cell.integrator, s).kind != dpd::Integrator::mvv) return plan;
   const std::int64_t m = std::min<std::int64_t>(t.chi2_steps, production);
-  for (std::int64_t k = 0; k < m; ++k) plan.chi2_steps.push_back(s.equilibrate + 1 + k * production / m);
+  for (std::int64_t k = 0; k < m; ++k) plan.chi2_steps.push_back(equilibrate + 1 + k * production / m);
 
   if (cell.nist) {
     // Every pair draws every step only in `all` mode; in `cells` mode the count varies, so tap generously.
@@ -25,7 +28,7 @@ TapPlan plan_taps(const Cell& cell, const StudyConfig& config, int words_per_pai
     const std::int64_t per_step = (s.pairs == "all" ? pairs : pairs / 8) * words_per_pair;
     const std::int64_t words = (t.nist_sequences * t.nist_bits + 63) / 64;
     const std::int64_t need = std::min<std::int64_t>((words + per_step - 1) / per_step, production);
-    for (std::int64_t k = s.steps - need + 1; k <= s.steps; ++k) plan.nist_steps.push_back(k);
+    for (std::int64_t k = steps - need + 1; k <= steps; ++k) plan.nist_steps.push_back(k);
   }
 
   // Couples (i, j), (i, j+1): neighbouring pair ids, the inputs a weak hash is most likely to correlate.
@@ -46,6 +49,9 @@ dpd::WaterConfig engine_config(const Cell& cell, const StudyConfig& config, int 
   const auto& s = config.scene;
   dpd::WaterConfig w;
   detail::set_run(w, cell, s, threads);
+  const IntegratorSpec integrator = integrator_of(cell.integrator, s);
+  w.integrator = integrator.kind;
+  w.lambda = integrator.lambda;
   w.density = s.density;
   w.a = s.a;
   std::set<std::int64_t> raw(plan.chi2_steps.begin(), plan.chi2_steps.end());
@@ -57,9 +63,9 @@ dpd::WaterConfig engine_config(const Cell& cell, const StudyConfig& config, int 
 
 void validate_scene(const StudyConfig& config) {
   const auto cells = enumerate_cells(config);
-  std::set<double> seen;
+  std::set<std::pair<double, std::string>> seen;
   for (const auto& c : cells) {
-    if (!seen.insert(c.dt).second) continue;
+    if (!seen.insert({c.dt, c.integrator}).second) continue;
     try {
       if (config.scene.is_bilayer())
         bilayer_engine_config(c, config, 1).validate();
@@ -69,7 +75,8 @@ void validate_scene(const StudyConfig& config) {
       // %g: std::to_string would print a dt of 1e-300 as 0.000000.
       char dt[32];
       std::snprintf(dt, sizeof dt, "%g", c.dt);
-      throw InputError("study config " + config.name + ": scene (dt = " + dt + "): " + e.what());
+      const std::string integ = c.integrator.empty() ? "" : ", integrator " + c.integrator;
+      throw InputError("study config " + config.name + ": scene (dt = " + dt + integ + "): " + e.what());
     }
   }
 }

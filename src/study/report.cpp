@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "dpdrng/common/output.hpp"
+#include "dpdrng/study/stability.hpp"
 #include "dpdrng/study/store.hpp"
 #include "report_common.hpp"
 
@@ -48,12 +49,12 @@ std::string cells_csv(const std::vector<CellResult>& cells) {
   for (const auto& c : cells)
     for (const auto& [k, v] : c.scalars) names.insert(k);
   std::ostringstream o;
-  o << "id,generator,rounds,distribution,feed,seeding,dt,replica,status,unstable_step,seconds";
+  o << "id,generator,rounds,distribution,feed,seeding,dt,integrator,replica,status,unstable_step,seconds";
   for (const auto& n : names) o << ',' << n;
   o << '\n';
   for (const auto& c : cells) {
     o << c.cell.id() << ',' << c.cell.generator << ',' << c.cell.rounds << ',' << c.cell.distribution << ',' << c.cell.feed
-      << ',' << c.cell.seeding << ',' << num(c.cell.dt) << ',' << c.cell.replica << ',' << to_string(c.status) << ','
+      << ',' << c.cell.seeding << ',' << num(c.cell.dt) << ',' << c.cell.integrator << ',' << c.cell.replica << ',' << to_string(c.status) << ','
       << c.unstable_step << ',' << num(c.seconds);
     for (const auto& n : names) o << ',' << (c.has(n) ? num(c.scalar(n, NAN)) : "");
     o << '\n';
@@ -91,8 +92,11 @@ std::string report_header(const StudyConfig& config, const Analysis& a, const st
        << ") at Δt = 0.005), pairs: " << s.pairs << "\n";
   else
     md << "- scene: " << s.name << ", " << s.particles << " beads, ρ = " << s.density << ", a = " << s.a
-       << ", γ = " << s.gamma << ", k_BT = " << s.kT << ", λ = " << s.lambda << ", " << s.steps << " steps ("
-       << s.equilibrate << " discarded), pairs: " << s.pairs << "\n";
+       << ", γ = " << s.gamma << ", k_BT = " << s.kT << ", λ = " << s.lambda << ", "
+       << (s.time > 0 ? num(s.time) + " units of simulated time at every Δt (" + num(s.equilibrate_time) +
+                            " discarded)"
+                      : std::to_string(s.steps) + " steps (" + std::to_string(s.equilibrate) + " discarded)")
+       << ", pairs: " << s.pairs << "\n";
   md << "- replicas per variant: " << config.replicas << "; reference: " << config.reference << "; α = " << a.alpha
      << "\n- " << a.error_control_sentence() << "\n- " << detection_limit << "\n- config hash `" << config.hash
      << "` (the config is stored in study.h5 and study.toml); generated "
@@ -168,6 +172,7 @@ std::string correlation_markdown(const Analysis& a) {
 fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& cells, const fs::path& study_dir,
                       const ReportOptions& options) {
   if (config.scene.is_bilayer()) return write_bilayer_report(config, cells, study_dir, options);
+  if (!config.integrators.empty()) return write_stability_report(config, cells, study_dir, options);
   const fs::path dir = study_dir / "report";
   fs::create_directories(dir / "charts");
   const Analysis a = analyse(config, cells);

@@ -12,15 +12,40 @@ namespace dpdrng::study {
 
 std::string Cell::noise() const { return feed == "halves" ? distribution : distribution + "-" + feed; }
 
-// The feed enters the id only when it is not halves: cells of stores written without a feed keep their ids.
+IntegratorSpec parse_integrator_spec(const std::string& text) {
+  if (text == "shardlow") return {dpd::Integrator::shardlow, 0.5};
+  if (text.rfind("mvv:", 0) == 0) {
+    const double lambda = parse_real(std::string_view(text).substr(4), "the lambda of " + quote_input(text));
+    if (!(lambda >= 0 && lambda <= 1))
+      throw InputError("the lambda of " + quote_input(text) + " must lie in [0, 1] (Groot-Warren's MVV)");
+    return {dpd::Integrator::mvv, lambda};
+  }
+  throw InputError("unknown integrator " + quote_input(text) + " (known: mvv:<lambda>, e.g. mvv:0.65, and shardlow)");
+}
+
+IntegratorSpec integrator_of(const std::string& name, const SceneParams& scene) {
+  if (name.empty()) return {dpd::Integrator::mvv, scene.lambda};
+  return parse_integrator_spec(name);
+}
+
+// The feed enters the id only when it is not halves, the integrator only when the sweep names one: cells of
+// stores written without them keep their ids.
 std::string Cell::id() const {
-  char buf[160];
+  char buf[200];
   const std::string n = noise();
+  char dt_buf[40];
+  std::snprintf(dt_buf, sizeof dt_buf, "dt%g", dt);
+  std::string dt_part = dt_buf;
+  if (!integrator.empty()) {
+    std::string tag = integrator;
+    tag.erase(std::remove(tag.begin(), tag.end(), ':'), tag.end());
+    dt_part += "-" + tag;
+  }
   if (reference)
-    std::snprintf(buf, sizeof buf, "%s-%s-dt%g-rep%02d", generator.c_str(), n.c_str(), dt, replica);
+    std::snprintf(buf, sizeof buf, "%s-%s-%s-rep%02d", generator.c_str(), n.c_str(), dt_part.c_str(), replica);
   else
-    std::snprintf(buf, sizeof buf, "%s-r%02d-%s-%s-dt%g-rep%02d", generator.c_str(), rounds, n.c_str(),
-                  seeding.c_str(), dt, replica);
+    std::snprintf(buf, sizeof buf, "%s-r%02d-%s-%s-%s-rep%02d", generator.c_str(), rounds, n.c_str(),
+                  seeding.c_str(), dt_part.c_str(), replica);
   return buf;
 }
 
@@ -38,39 +63,47 @@ std::vector<Cell> enumerate_cells(const StudyConfig& config) {
            std::find(t.nist_distributions.begin(), t.nist_distributions.end(), dist) != t.nist_distributions.end() &&
            replica < t.nist_replicas && (feed == "halves" || feed == config.feeds.front());
   };
+  // Shardlow's sweep draws its numbers outside the pair loop's taps: its cells measure physics only.
+  const auto tapped = [&](const std::string& integ) {
+    return integrator_of(integ, config.scene).kind == dpd::Integrator::mvv;
+  };
   const std::vector<std::string> halves_only{"halves"};
+  const std::vector<std::string> scene_integrator{""};
   for (double dt : config.scene.dt)
-    for (int rep = 0; rep < config.replicas; ++rep) {
-      // A replica's seed sets the initial state (and the reference's stream); distinct per replica, shared
-      // across generators.
-      const std::uint64_t seed = rng::splitmix64_mix(config.seed * 0x9e3779b97f4a7c15ull + std::uint64_t(rep));
-      for (const auto& dist : config.distributions)
-        for (const auto& feed : dist == "gauss" ? config.feeds : halves_only) {
-          // Each feed has its own reference: MT19937 under that feed (a control of the feed itself).
-          Cell ref;
-          ref.generator = config.reference;
-          ref.rounds = 1;
-          ref.distribution = dist;
-          ref.feed = feed;
-          ref.seeding = "stream";
-          ref.dt = dt;
-          ref.replica = rep;
-          ref.reference = true;
-          ref.seed = seed;
-          ref.nist = wants_nist(ref.generator, dist, feed, rep);
-          cells.push_back(ref);
-          for (const auto& g : config.generators)
-            for (const auto& seeding : g.seedings.empty() ? config.seedings : g.seedings)
-              for (int r : g.rounds) {
-                Cell c = ref;
-                c.generator = g.name;
-                c.rounds = r;
-                c.seeding = seeding;
-                c.reference = false;
-                c.nist = wants_nist(g.name, dist, feed, rep);
-                cells.push_back(c);
-              }
-        }
+    for (const auto& integ : config.integrators.empty() ? scene_integrator : config.integrators) {
+      for (int rep = 0; rep < config.replicas; ++rep) {
+        // A replica's seed sets the initial state (and the reference's stream); distinct per replica, shared
+        // across generators.
+        const std::uint64_t seed = rng::splitmix64_mix(config.seed * 0x9e3779b97f4a7c15ull + std::uint64_t(rep));
+        for (const auto& dist : config.distributions)
+          for (const auto& feed : dist == "gauss" ? config.feeds : halves_only) {
+            // Each feed has its own reference: MT19937 under that feed (a control of the feed itself).
+            Cell ref;
+            ref.generator = config.reference;
+            ref.rounds = 1;
+            ref.distribution = dist;
+            ref.feed = feed;
+            ref.seeding = "stream";
+            ref.dt = dt;
+            ref.integrator = integ;
+            ref.replica = rep;
+            ref.reference = true;
+            ref.seed = seed;
+            ref.nist = wants_nist(ref.generator, dist, feed, rep) && tapped(integ);
+            cells.push_back(ref);
+            for (const auto& g : config.generators)
+              for (const auto& seeding : g.seedings.empty() ? config.seedings : g.seedings)
+                for (int r : g.rounds) {
+                  Cell c = ref;
+                  c.generator = g.name;
+                  c.rounds = r;
+                  c.seeding = seeding;
+                  c.reference = false;
+                  c.nist = wants_nist(g.name, dist, feed, rep) && tapped(integ);
+                  cells.push_back(c);
+                }
+          }
+      }
     }
   return cells;
 }

@@ -26,6 +26,18 @@ TEST(DpdKernel, OnePairByHand) {
   EXPECT_NEAR(g.s * c * std::sqrt(3.0), -12.28, 1e-12);
 }
 
+// Two beads at one position have no direction: the kernel skips the pair (LAMMPS's pair style dpd skips r below
+// 1e-10) with no force and no virial, where 1/r would make both NaN.
+TEST(DpdKernel, CoincidentBeadsAreSkipped) {
+  const DpdKernel k = make_kernel(25.0, 1.0, 4.5, 1.0, 0.04);
+  const PairForce f = k(0.0, 0.0, 0.0, 0.0, 1.0, -2.0, 0.5, 25.0, 0.7);
+  EXPECT_EQ(f.s, 0.0);
+  EXPECT_EQ(f.a_w, 0.0);
+  EXPECT_EQ(DpdKernel::conservative_weight(f, 0.0), 0.0);
+  // A pair at r > 0 keeps its weight a·w/r: r = 0.6 gives 25·0.4/0.6.
+  EXPECT_NEAR(DpdKernel::conservative_weight(k(0.36, 0.6, 0, 0, 0, 0, 0, 25.0, 0.0), 0.36), 25.0 * 0.4 / 0.6, 1e-12);
+}
+
 namespace {
 WaterConfig zero_noise_config(PairMode mode) {
   WaterConfig cfg;
@@ -71,6 +83,46 @@ TEST(PairLoop, ThreeBeadsThroughThePeriodicBoundary) {
 
 // ζ_ij = ζ_ji: the pair loop visits i < j with d = r_j − r_i; seen from j the same pair is (j, i, −d), and
 // canonical() must map it back to the same generator input for every generator and seeding.
+// Beads 0 and 1 at one position, bead 2 at r = 0.5 from both, moving, under 32TEA(1) noise: every force and
+// virial is finite, the conservative virial is the two r = 0.5 pairs' alone, and min_r2 reports the 0 so that
+// the run's guard (min_distance) still sees it.
+TEST(PairLoop, CoincidentBeadsGiveNoForceAndNoNaN) {
+  for (PairMode mode : {PairMode::all, PairMode::cells}) {
+    System s;
+    s.box = Box{{5.0, 5.0, 5.0}};
+    s.resize(3);
+    s.x = {1.0, 1.0, 1.5};
+    s.y = {2.0, 2.0, 2.0};
+    s.z = {2.0, 2.0, 2.0};
+    s.vx = {0.3, -0.4, 0.1};
+    WaterConfig cfg;
+    cfg.pairs = mode;
+    cfg.threads = 1;
+    cfg.generator = rng::validated({"tea32", 1});
+    auto pf = make_pair_forces(cfg, make_kernel(25, 1, 4.5, 1, 0.04), 3);
+    Taps taps;
+    const ForceSums f = pf->compute(s, VelocityView{s.vx.data(), s.vy.data(), s.vz.data()}, 7, false, false, false, taps);
+    for (int i = 0; i < 3; ++i)
+      EXPECT_TRUE(std::isfinite(s.fx[i]) && std::isfinite(s.fy[i]) && std::isfinite(s.fz[i])) << to_string(mode);
+    for (int a = 0; a < 3; ++a) EXPECT_TRUE(std::isfinite(f.virial[a]) && std::isfinite(f.virial_cons[a]));
+    // The conservative virial is that of the two r = 0.5 pairs alone: 2 · a w r = 2 · 25 · 0.5 · 0.5 (xx only).
+    EXPECT_NEAR(f.virial_cons[0], 12.5, 1e-12) << to_string(mode);
+    EXPECT_EQ(f.virial_cons[1], 0.0);
+    EXPECT_EQ(f.min_r2, 0.0);
+    // Alone, the coincident pair gives exactly zero force.
+    System two;
+    two.box = s.box;
+    two.resize(2);
+    two.x = {1.0, 1.0}, two.y = {2.0, 2.0}, two.z = {2.0, 2.0}, two.vx = {0.3, -0.4};
+    auto pf2 = make_pair_forces(cfg, make_kernel(25, 1, 4.5, 1, 0.04), 2);
+    const ForceSums g =
+        pf2->compute(two, VelocityView{two.vx.data(), two.vy.data(), two.vz.data()}, 7, false, false, false, taps);
+    for (int i = 0; i < 2; ++i) EXPECT_TRUE(two.fx[i] == 0.0 && two.fy[i] == 0.0 && two.fz[i] == 0.0) << to_string(mode);
+    EXPECT_EQ(g.virial[0] + g.virial[1] + g.virial[2], 0.0);
+    EXPECT_EQ(g.virial_cons[0] + g.virial_cons[1] + g.virial_cons[2], 0.0);
+  }
+}
+
 TEST(PairNoise, SymmetricForEverySeedingAndGenerator) {
   for (const char* name : {"tea32", "tea64", "philox4x32", "threefry2x64", "splitmix64"})
     for (rng::Seeding seeding : {rng::Seeding::distance, rng::Seeding::pair_step})

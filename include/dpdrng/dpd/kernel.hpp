@@ -27,16 +27,20 @@ struct DpdKernel {
   double rc2() const { return rc * rc; }
   double a_of(std::uint8_t ti, std::uint8_t tj) const { return a[std::size_t(ti) * ntypes + tj]; }
 
-  // r2 must be in (0, r_c²).
+  // r2 must be in [0, r_c²). Two beads at one position (r = 0) have no direction between them: the pair is
+  // skipped, as LAMMPS's pair style dpd skips r below 1e-10, and gives {0, 0} (no force, no virial, no NaN). The
+  // select keeps every r > 0 pair's arithmetic as it is.
   static inline PairForce evaluate(double r2, double dx, double dy, double dz, double dvx, double dvy, double dvz,
                                    double a, double zeta, double rc, double gamma, double sigma_over_sqrt_dt) {
     const double r = std::sqrt(r2);
-    const double inv_r = 1.0 / r;
+    const double inv_r = r2 > 0 ? 1.0 / r : 0.0;
     const double w = 1.0 - r / rc;
     const double e_dv = (dx * dvx + dy * dvy + dz * dvz) * inv_r;
     const double mag = -a * w + gamma * w * w * e_dv - sigma_over_sqrt_dt * w * zeta;
     return {mag * inv_r, a * w * r};
   }
+  // a·w/r, the conservative virial per d_α² (r_α F^C_α = this · d_α²); 0 for a skipped pair at r = 0.
+  static inline double conservative_weight(const PairForce& pf, double r2) { return r2 > 0 ? pf.a_w / r2 : 0.0; }
   PairForce operator()(double r2, double dx, double dy, double dz, double dvx, double dvy, double dvz, double a,
                        double zeta) const {
     return evaluate(r2, dx, dy, dz, dvx, dvy, dvz, a, zeta, rc, gamma, sigma * inv_sqrt_dt);

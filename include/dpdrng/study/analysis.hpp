@@ -23,6 +23,7 @@ struct VariantKey {
   double dt = 0.04;
   bool reference = false;
   std::string feed = "halves";
+  std::string integrator;  // Cell::integrator: empty unless the sweep names integrators
 
   std::string label() const;  // "tea32(1)"
   auto operator<=>(const VariantKey&) const = default;

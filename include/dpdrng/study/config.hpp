@@ -1,5 +1,6 @@
 #pragma once
-// A study configuration: what to sweep (generators × rounds × distributions × seedings × Δt × replicas), the
+// A study configuration: what to sweep (generators × rounds × distributions × seedings × Δt × integrators ×
+// replicas), the
 // scene, and the sizes of the tests. Parsed from TOML and validated completely before anything is written:
 // an unknown key, a NaN or an out-of-range value is an InputError that names the key.
 #include <cstdint>
@@ -30,9 +31,14 @@ struct SceneParams {
   std::vector<double> dt{0.04};  // more than one value makes Δt a sweep dimension
   long steps = 10000;
   long equilibrate = 500;
+  // Simulated time instead of a step count (0: unused): each Δt then runs round(time / Δt) steps, of which
+  // round(equilibrate_time / Δt) equilibrate, so that a Δt sweep compares runs of one physical length.
+  double time = 0, equilibrate_time = 0;
   std::string pairs = "all";
 
   bool is_bilayer() const { return name == "bilayer"; }
+  long steps_at(double dt) const;
+  long equilibrate_at(double dt) const;
 };
 
 // Which family of tests the report holds at family-wise error rate α (Holm's procedure): every comparison of
@@ -69,6 +75,8 @@ struct StudyConfig {
   // multiplied by the feeds.
   std::vector<std::string> feeds{"halves"};
   std::vector<std::string> seedings{"distance"};
+  // [sweep] integrators ("mvv:<λ>", "shardlow"; sweep.hpp); empty: MVV at the scene's λ, not a factor.
+  std::vector<std::string> integrators;
   SceneParams scene;
   TestParams tests;
   CostParams cost;

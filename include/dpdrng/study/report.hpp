@@ -22,7 +22,7 @@ struct ReportOptions {
   std::filesystem::path calibration;
 };
 
-// Returns the path of report.md.
+// Returns the path of report.md. A study that sweeps integrators gets the stability report (stability.hpp).
 std::filesystem::path write_report(const StudyConfig& config, const std::vector<CellResult>& cells,
                                    const std::filesystem::path& study_dir, const ReportOptions& options = {});
 

@@ -6,9 +6,21 @@
 #include <string>
 #include <vector>
 
+#include "dpdrng/dpd/config.hpp"
 #include "dpdrng/study/config.hpp"
 
 namespace dpdrng::study {
+
+// One integrator of the sweep ([sweep] integrators): Groot–Warren MVV with its λ ("mvv:0.65") or Shardlow's S1
+// splitting ("shardlow", λ unused). Cells of a study that sweeps none carry the empty name: MVV at the scene's λ.
+struct IntegratorSpec {
+  dpd::Integrator kind = dpd::Integrator::mvv;
+  double lambda = 0.5;
+};
+// InputError unless "mvv:<λ in [0, 1]>" or "shardlow".
+IntegratorSpec parse_integrator_spec(const std::string& text);
+// The spec a cell runs: the named one, or MVV at the scene's λ for the empty name.
+IntegratorSpec integrator_of(const std::string& name, const SceneParams& scene);
 
 struct Cell {
   std::string generator;
@@ -17,6 +29,7 @@ struct Cell {
   std::string feed = "halves";  // rng::Feed; a store written without the field reads halves
   std::string seeding;  // "stream" for the reference
   double dt = 0.04;
+  std::string integrator;  // [sweep] integrators entry; empty: MVV at the scene's λ (stores without the field)
   int replica = 0;
   bool reference = false;
   bool nist = false;  // this cell also feeds its outputs to the NIST battery
@@ -24,7 +37,9 @@ struct Cell {
 
   // The distribution with its feed when that is not halves: "gauss", "gauss-blocks", "uniform".
   std::string noise() const;
-  std::string id() const;     // e.g. "tea32-r01-gauss-distance-dt0.04-rep00", a valid file and group name
+  // e.g. "tea32-r01-gauss-distance-dt0.04-rep00", a valid file and group name; an integrator named by the sweep
+  // follows the Δt ("…-dt0.04-mvv0.65-rep00").
+  std::string id() const;
   std::string label() const;  // e.g. "tea32(1)"
 };
 

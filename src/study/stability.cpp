@@ -1,0 +1,128 @@
+// The stability study's points (stability.hpp): cells grouped by method and Δt, unstable replicas counted with
+// their step and reason, the stable ones' accuracy and cost.
+#include "dpdrng/study/stability.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "report_chart.hpp"
+
+namespace dpdrng::study {
+namespace {
+
+bool is_reference_rdf_cell(const CellResult& c, double dt) {
+  return c.cell.reference && c.cell.feed == "halves" && c.cell.dt == dt && c.status == CellStatus::ok;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return NAN;
+  std::sort(v.begin(), v.end());
+  const std::size_t m = v.size() / 2;
+  return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
+}
+
+// "unstable at step 412: temperature runaway (…)" → "temperature runaway (…)".
+std::string bare_reason(const std::string& reason) {
+  const std::size_t colon = reason.find(": ");
+  return reason.rfind("unstable at step", 0) == 0 && colon != std::string::npos ? reason.substr(colon + 2) : reason;
+}
+
+void reference_of(const std::vector<CellResult>& cells, StabilityAnalysis& a) {
+  for (const auto& c : cells)
+    if (c.cell.reference && (!std::isfinite(a.reference_dt) || c.cell.dt < a.reference_dt)) a.reference_dt = c.cell.dt;
+  std::vector<const CellResult*> ref;
+  for (const auto& c : cells)
+    if (is_reference_rdf_cell(c, a.reference_dt)) ref.push_back(&c);
+  a.reference_cells = ref.size();
+  a.reference_diffusion = replica_mean(ref, "diffusion_coefficient", "diffusion_sem").mean;
+  a.reference_rdf = detail::mean_series(ref, "rdf/g");
+}
+
+void accuracy_of(const std::vector<const CellResult*>& ok, const StabilityAnalysis& a, StabilityPoint& p) {
+  const ReplicaMean t = replica_mean(ok, "temperature_mean", "temperature_sem");
+  p.temperature = t.mean, p.temperature_ci = t.ci95;
+  p.temperature_error = std::abs(t.mean - 1.0);
+  p.pressure_conservative = replica_mean(ok, "pressure_conservative_mean", "pressure_sem").mean;
+  p.pressure_error = std::abs(p.pressure_conservative - kWaterPressureConservative) / kWaterPressureConservative;
+  p.diffusion = replica_mean(ok, "diffusion_coefficient", "diffusion_sem").mean;
+  p.diffusion_error = std::abs(p.diffusion - a.reference_diffusion) / a.reference_diffusion;
+  if (!a.reference_rdf.empty()) p.rdf_error = curve_error(detail::mean_series(ok, "rdf/g"), a.reference_rdf, 0.1);
+  std::vector<double> cost;
+  for (const auto* c : ok)
+    if (c->has("cost.step_seconds")) cost.push_back(c->scalar("cost.step_seconds", NAN) / c->cell.dt);
+  p.seconds_per_time = median(cost);
+}
+
+}  // namespace
+
+std::string StabilityPoint::method() const {
+  return (integrator.empty() ? std::string("mvv") : integrator) + " " + generator + " " + noise;
+}
+
+StabilityAnalysis analyse_stability(const StudyConfig& config, const std::vector<CellResult>& cells) {
+  StabilityAnalysis a;
+  reference_of(cells, a);
+  // Methods in the order of the sweep (its first cell of each), Δt ascending.
+  std::vector<std::string> order;
+  std::map<std::string, std::map<double, std::vector<const CellResult*>>> groups;
+  std::vector<const CellResult*> sorted;
+  for (const auto& c : cells) sorted.push_back(&c);
+  std::map<std::string, std::size_t> position;
+  for (const auto& cell : enumerate_cells(config)) position.emplace(cell.id(), position.size());
+  const auto rank = [&](const CellResult* c) {
+    const auto it = position.find(c->cell.id());
+    return it == position.end() ? position.size() : it->second;
+  };
+  std::stable_sort(sorted.begin(), sorted.end(),
+                   [&](const CellResult* x, const CellResult* y) { return rank(x) < rank(y); });
+  for (const auto* c : sorted) {
+    StabilityPoint key;
+    key.integrator = c->cell.integrator, key.generator = c->cell.label(), key.noise = c->cell.noise();
+    const std::string m = key.method();
+    if (!groups.count(m)) order.push_back(m);
+    groups[m][c->cell.dt].push_back(c);
+  }
+  for (const auto& m : order)
+    for (const auto& [dt, group] : groups[m]) {
+      StabilityPoint p;
+      const Cell& first = group.front()->cell;
+      p.integrator = first.integrator, p.generator = first.label(), p.noise = first.noise(), p.dt = dt;
+      p.replicas = group.size();
+      std::vector<const CellResult*> ok;
+      for (const auto* c : group) {
+        if (c->status == CellStatus::ok) {
+          ok.push_back(c);
+          continue;
+        }
+        const long step = c->status == CellStatus::unstable ? c->unstable_step : -1;
+        if (p.reason.empty() || (step >= 0 && (p.first_blowup_step < 0 || step < p.first_blowup_step))) {
+          p.first_blowup_step = step;
+          p.reason = c->status == CellStatus::unstable ? bare_reason(c->reason)
+                                                       : std::string(to_string(c->status)) + ": " + c->reason;
+        }
+      }
+      p.stable = ok.size();
+      if (!ok.empty()) accuracy_of(ok, a, p);
+      a.points.push_back(std::move(p));
+    }
+  return a;
+}
+
+double largest_accurate_dt(const StabilityAnalysis& a, const std::string& method, double tolerance) {
+  double best = NAN;
+  for (const auto& p : a.points) {
+    if (p.method() != method) continue;
+    if (p.stable < p.replicas || !(p.temperature_error < tolerance)) break;
+    best = p.dt;
+  }
+  return best;
+}
+
+double first_unstable_dt(const StabilityAnalysis& a, const std::string& method) {
+  for (const auto& p : a.points)
+    if (p.method() == method && p.stable < p.replicas) return p.dt;
+  return NAN;
+}
+
+}  // namespace dpdrng::study

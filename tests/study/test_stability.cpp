@@ -1,0 +1,187 @@
+// The stability report's arithmetic on hand-made cells: a method × Δt counts its stable replicas and keeps the
+// earliest blow-up's step and reason, its accuracy comes from the stable replicas only (never from an unstable
+// one), the largest accurate Δt stops at the first Δt that is inaccurate or unstable, and every blown-up point
+// keeps its row in every table. The CI-sized study itself runs in StabilityCli.CiStudyReportsEveryCell.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sys/wait.h>
+
+#include "../temp_dir.hpp"
+#include "dpdrng/study/stability.hpp"
+#include "dpdrng/study/store.hpp"
+#include "dpdrng/study/sweep.hpp"
+
+using namespace dpdrng::study;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kConfig = R"(
+[study]
+name = "s"
+replicas = 2
+[sweep]
+distributions = ["gauss"]
+integrators = ["mvv:0.5", "shardlow"]
+[[sweep.generator]]
+name = "tea32"
+rounds = [1]
+[scene]
+particles = 64
+dt = [0.02, 0.05, 0.1]
+time = 2.0
+pairs = "cells"
+[tests]
+chi2_steps = 0
+ttest_pairs = 0
+)";
+
+// MVV at λ = 0.5 runs hot by 2 % × (Δt / 0.02) and blows up at Δt 0.1 (one replica at step 7, the other at 9);
+// Shardlow holds k_BT = 1.001 and is stable throughout. D and g(r) of MT at Δt 0.02 are the reference.
+std::vector<CellResult> made_up_cells(const StudyConfig& c) {
+  std::vector<CellResult> out;
+  for (const Cell& cell : enumerate_cells(c)) {
+    CellResult r;
+    r.cell = cell;
+    const bool mvv = cell.integrator == "mvv:0.5";
+    if (mvv && cell.dt == 0.1) {
+      r.status = CellStatus::unstable;
+      r.unstable_step = 9 - 2 * (cell.replica == 1 && !cell.reference);
+      r.reason = "unstable at step " + std::to_string(r.unstable_step) + ": temperature runaway (k_BT = 150)";
+      out.push_back(r);
+      continue;
+    }
+    const double t = mvv ? 1.0 + 0.02 * cell.dt / 0.02 : 1.001;
+    r.scalars["temperature_mean"] = t + (cell.replica ? 1e-4 : -1e-4);
+    r.scalars["temperature_sem"] = 1e-4;
+    r.scalars["pressure_conservative_mean"] = 23.64 * (1 + (mvv ? 0.01 : 0.0));
+    r.scalars["diffusion_coefficient"] = 0.3 * (1 + cell.dt);
+    r.scalars["cost.step_seconds"] = mvv ? 1e-3 : 2e-3;
+    r.series["rdf/g"] = {0.5, 1.0, 1.2 + cell.dt};
+    out.push_back(r);
+  }
+  return out;
+}
+
+TEST(Stability, PointsCountBlowUpsAndMeasureOnlyStableReplicas) {
+  const StudyConfig c = parse_config(kConfig, "cfg.toml");
+  const auto cells = made_up_cells(c);
+  const StabilityAnalysis a = analyse_stability(c, cells);
+  EXPECT_EQ(a.reference_dt, 0.02);
+  EXPECT_EQ(a.reference_cells, 4u);  // MT at Δt 0.02 under both integrators, 2 replicas each
+  EXPECT_NEAR(a.reference_diffusion, 0.3 * 1.02, 1e-12);
+  ASSERT_EQ(a.points.size(), 2u * 2u * 3u);  // 2 integrators × (MT, tea32(1)) × 3 Δt
+  const StabilityPoint* blown = nullptr;
+  for (const auto& p : a.points) {
+    EXPECT_EQ(p.replicas, 2u);
+    if (p.integrator == "mvv:0.5" && p.generator == "tea32(1)" && p.dt == 0.1) blown = &p;
+  }
+  ASSERT_NE(blown, nullptr);
+  EXPECT_EQ(blown->stable, 0u);
+  EXPECT_TRUE(blown->all_blew_up());
+  EXPECT_EQ(blown->first_blowup_step, 7);
+  EXPECT_EQ(blown->reason, "temperature runaway (k_BT = 150)");
+  EXPECT_TRUE(std::isnan(blown->temperature) && std::isnan(blown->temperature_error));
+  const StabilityPoint& first = a.points.front();  // mvv:0.5 mt19937 at Δt 0.02
+  EXPECT_EQ(first.method(), "mvv:0.5 mt19937 gauss");
+  EXPECT_NEAR(first.temperature, 1.02, 1e-12);
+  EXPECT_NEAR(first.temperature_error, 0.02, 1e-12);
+  EXPECT_NEAR(first.pressure_error, 0.01, 1e-12);
+  EXPECT_NEAR(first.diffusion_error, 0.0, 1e-12);
+  EXPECT_NEAR(first.seconds_per_time, 1e-3 / 0.02, 1e-12);
+}
+
+TEST(Stability, LargestAccurateDtAndFirstBlowUp) {
+  const StudyConfig c = parse_config(kConfig, "cfg.toml");
+  const StabilityAnalysis a = analyse_stability(c, made_up_cells(c));
+  // MVV: |T − 1| = 2 % at 0.02, 5 % at 0.05, blown up at 0.1.
+  EXPECT_TRUE(std::isnan(largest_accurate_dt(a, "mvv:0.5 tea32(1) gauss", 0.01)));
+  EXPECT_EQ(largest_accurate_dt(a, "mvv:0.5 tea32(1) gauss", 0.03), 0.02);
+  EXPECT_EQ(first_unstable_dt(a, "mvv:0.5 tea32(1) gauss"), 0.1);
+  EXPECT_EQ(largest_accurate_dt(a, "shardlow tea32(1) gauss", 0.01), 0.1);
+  EXPECT_TRUE(std::isnan(first_unstable_dt(a, "shardlow tea32(1) gauss")));
+  const std::string frontier = frontier_markdown(a);
+  EXPECT_NE(frontier.find("| mvv:0.5 tea32(1) gauss | none | 0.02 | 0.1 |"), std::string::npos) << frontier;
+  EXPECT_NE(frontier.find("| shardlow tea32(1) gauss | 0.1 | 0.1 | none in the sweep |"), std::string::npos) << frontier;
+}
+
+// A blown-up point is in the map, the accuracy table and the CSV: never dropped.
+TEST(Stability, BlownUpPointsAppearInEveryTable) {
+  const StudyConfig c = parse_config(kConfig, "cfg.toml");
+  const StabilityAnalysis a = analyse_stability(c, made_up_cells(c));
+  const std::string map = stability_map_markdown(a);
+  EXPECT_NE(map.find("| mvv:0.5 tea32(1) gauss | 2/2 | 2/2 | **0/2** @7 |"), std::string::npos) << map;
+  EXPECT_NE(map.find("mvv:0.5 tea32(1) gauss, Δt 0.1: 2 of 2 blew up; step 7: temperature runaway"),
+            std::string::npos)
+      << map;
+  const std::string acc = accuracy_markdown(a);
+  EXPECT_NE(acc.find("| mvv:0.5 tea32(1) gauss | 0.1 | 0/2 | blown up: step 7: temperature runaway"),
+            std::string::npos)
+      << acc;
+  const std::string csv = stability_csv(a);
+  EXPECT_NE(csv.find("mvv:0.5 tea32(1) gauss,mvv:0.5,tea32(1),gauss,0.1,2,0,7,\"temperature runaway (k_BT = 150)\",,"),
+            std::string::npos)
+      << csv;
+}
+
+}  // namespace
+
+namespace {
+
+int run_cli(const std::string& args, std::string* err) {
+  TempDir logs;
+  const fs::path e = logs.path / "stderr";
+  const std::string cmd = std::string(DPDRNG_CLI_PATH) + " " + args + " >/dev/null 2>'" + e.string() + "'";
+  const int rc = std::system(cmd.c_str());
+  std::ifstream in(e);
+  *err = std::string(std::istreambuf_iterator<char>(in), {});
+  return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+}
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// study/stability-ci.toml end to end: every cell stored, MVV blown up at Δt 0.5 (the run's own guard, not a
+// made-up cell), its cells null (no observable stored) and named in every table of the report.
+TEST(StabilityCli, CiStudyReportsEveryCell) {
+  TempDir tmp;
+  const std::string cfg = std::string(DPDRNG_SOURCE_DIR) + "/study/stability-ci.toml";
+  const fs::path out = tmp.path / "s";
+  std::string err;
+  ASSERT_EQ(run_cli("study run '" + cfg + "' --out '" + out.string() + "' --threads 2", &err), 0) << err;
+  const StudyConfig c = load_config(cfg);
+  const auto cells = Store(out).load_all();
+  ASSERT_EQ(cells.size(), enumerate_cells(c).size());
+  std::size_t unstable = 0;
+  for (const auto& cell : cells) {
+    if (cell.status != CellStatus::unstable) continue;
+    ++unstable;
+    EXPECT_NE(cell.reason.find("unstable at step"), std::string::npos) << cell.reason;
+    for (const char* k : {"temperature_mean", "pressure_mean", "pressure_conservative_mean", "diffusion_coefficient"})
+      EXPECT_FALSE(cell.has(k)) << cell.cell.id() << " stores " << k;
+  }
+  ASSERT_GT(unstable, 0u) << "MVV at Δt 0.5 should blow up";
+  ASSERT_EQ(run_cli("study report '" + out.string() + "'", &err), 0) << err;
+  const std::string md = read(out / "report" / "report.md");
+  for (const char* section : {"## Stability map", "## How large a Δt each method allows",
+                              "## Accuracy against cost per unit of simulated time", "## Unstable and failed cells"})
+    EXPECT_NE(md.find(section), std::string::npos) << section;
+  EXPECT_NE(md.find("| mvv:0.5 tea32(1) gauss | 0.5 | 0/2 | blown up: step "), std::string::npos) << md;
+  const StabilityAnalysis a = analyse_stability(c, cells);
+  EXPECT_EQ(a.points.size(), 2u * 2u * 4u);
+  const std::string csv = read(out / "report" / "stability.csv");
+  for (const auto& p : a.points) {
+    EXPECT_NE(csv.find(p.method() + "," + p.integrator), std::string::npos) << p.method();
+    char dt[32];
+    std::snprintf(dt, sizeof dt, "%g", p.dt);
+    if (p.all_blew_up()) EXPECT_NE(md.find("| " + p.method() + " | " + dt + " | 0/"), std::string::npos) << p.method();
+  }
+}
+
+}  // namespace
