@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 
+#include <omp.h>
+
 #include "dpdrng/rng/distribution.hpp"
 #include "dpdrng/rng/mt.hpp"
 #include "dpdrng/rng/registry.hpp"
@@ -40,6 +42,36 @@ int cell_along(double x, double inv_w, int n) {
   return std::min(n - 1, static_cast<int>(t));
 }
 
+// A block's cell pairs {origin + p, origin + q}: along each axis (p, q) is (0, 0), (0, 1) or (1, 0), not all
+// (0, 0), and the first axis that differs is (0, 1), so that each unordered pair appears once.
+struct CellPair {
+  int p[3], q[3];
+};
+
+std::array<CellPair, 13> block_cell_pairs() {
+  constexpr int kAlong[3][2] = {{0, 0}, {0, 1}, {1, 0}};
+  std::array<CellPair, 13> out{};
+  std::size_t k = 0;
+  for (int az = 0; az < 3; ++az)
+    for (int ay = 0; ay < 3; ++ay)
+      for (int ax = 0; ax < 3; ++ax) {
+        const int along[3] = {ax, ay, az};
+        const int first = ax != 0 ? ax : ay != 0 ? ay : az;
+        if (first != 1) continue;  // all (0, 0), or the mirror image of a pair already listed
+        for (int d = 0; d < 3; ++d) out[k].p[d] = kAlong[along[d]][0], out[k].q[d] = kAlong[along[d]][1];
+        ++k;
+      }
+  return out;
+}
+
+const std::array<CellPair, 13> kBlockCellPairs = block_cell_pairs();
+
+// Colour of a block origin along one axis: its parity, and 2 for the last cell of an odd axis (its block wraps
+// onto cell 0, as the block at cell 0 does).
+int colour_along(int c, int n) { return n % 2 == 1 && c == n - 1 ? 2 : c % 2; }
+
+constexpr int kColours = 27;
+
 }  // namespace
 
 ShardlowSweep::ShardlowSweep(const WaterConfig& cfg)
@@ -47,6 +79,8 @@ ShardlowSweep::ShardlowSweep(const WaterConfig& cfg)
       gamma_(cfg.gamma),
       sigma_(std::sqrt(2.0 * cfg.gamma * cfg.kT)),
       dt_(cfg.dt),
+      threads_(cfg.threads),
+      stream_(cfg.generator.name == "mt19937"),
       zeta_(make_zeta(cfg)) {}
 
 // Along ê = d/r the pair's relative velocity u = ê·(v_j − v_i) obeys du = −2γw²u dt + 2σw dW, and v_i moves by
@@ -54,13 +88,13 @@ ShardlowSweep::ShardlowSweep(const WaterConfig& cfg)
 // implicit over Δt/2 (u at its end), the one ζ shared by both halves. With a = γw²Δt this maps
 // u → [(1 − a)u + 2σwζ√Δt] / (1 + a), whose stationary variance is exactly σ²/γ = 2k_BT.
 void ShardlowSweep::update_pair(System& s, std::uint32_t i, std::uint32_t j, double dx, double dy, double dz,
-                                double r2, std::uint64_t step) {
+                                double r2, std::uint64_t step, ZetaSums& z) const {
   const double r = std::sqrt(r2);
   const double ex = dx / r, ey = dy / r, ez = dz / r;
   const double w = 1.0 - r / rc_;
   const double half_a = 0.5 * gamma_ * w * w * dt_;
   const double zeta = zeta_(rng::PairInput{i, j, dx, dy, dz, step});
-  zeta_sums_.add(zeta);
+  z.add(zeta);
   const double half_noise = 0.5 * sigma_ * w * std::sqrt(dt_) * zeta;
   double u = ex * (s.vx[j] - s.vx[i]) + ey * (s.vy[j] - s.vy[i]) + ez * (s.vz[j] - s.vz[i]);
   const double d1 = half_a * u - half_noise;
@@ -95,36 +129,76 @@ void ShardlowSweep::build_cells(const System& s) {
   for (std::size_t i = 0; i < n; ++i) cell_beads_[fill[bead_cell_[i]]++] = static_cast<std::uint32_t>(i);
 }
 
-void ShardlowSweep::sweep(System& s, std::uint64_t step) {
-  const std::size_t n = s.size();
+void ShardlowSweep::colour_blocks() {
+  if (std::equal(nc_, nc_ + 3, coloured_for_)) return;
+  std::copy(nc_, nc_ + 3, coloured_for_);
+  const std::size_t ncell = std::size_t(nc_[0]) * nc_[1] * nc_[2];
+  std::vector<std::uint32_t> colour(ncell);
+  colour_start_.assign(kColours + 1, 0);
+  for (int cz = 0; cz < nc_[2]; ++cz)
+    for (int cy = 0; cy < nc_[1]; ++cy)
+      for (int cx = 0; cx < nc_[0]; ++cx) {
+        const std::size_t c = (std::size_t(cz) * nc_[1] + cy) * nc_[0] + cx;
+        colour[c] = colour_along(cx, nc_[0]) + 3 * (colour_along(cy, nc_[1]) + 3 * colour_along(cz, nc_[2]));
+        ++colour_start_[colour[c] + 1];
+      }
+  for (int k = 0; k < kColours; ++k) colour_start_[k + 1] += colour_start_[k];
+  block_order_.resize(ncell);
+  std::vector<std::uint32_t> fill(colour_start_.begin(), colour_start_.end() - 1);
+  for (std::size_t c = 0; c < ncell; ++c) block_order_[fill[colour[c]]++] = static_cast<std::uint32_t>(c);
+}
+
+void ShardlowSweep::sweep_block(System& s, std::uint32_t origin, std::uint64_t step, ZetaSums& z) const {
   const double Lx = s.box.L[0], Ly = s.box.L[1], Lz = s.box.L[2];
   const double hx = 0.5 * Lx, hy = 0.5 * Ly, hz = 0.5 * Lz, rc2 = rc_ * rc_;
-  zeta_sums_ = ZetaSums{};
   auto visit = [&](std::uint32_t i, std::uint32_t j) {
+    if (i > j) std::swap(i, j);
     const double dx = min_image(s.x[j] - s.x[i], Lx, hx), dy = min_image(s.y[j] - s.y[i], Ly, hy),
                  dz = min_image(s.z[j] - s.z[i], Lz, hz);
     const double r2 = dx * dx + dy * dy + dz * dz;
-    if (r2 < rc2 && r2 > 0) update_pair(s, i, j, dx, dy, dz, r2, step);
+    if (r2 < rc2 && r2 > 0) update_pair(s, i, j, dx, dy, dz, r2, step, z);
   };
+  const int cx = int(origin % nc_[0]), cy = int(origin / nc_[0] % nc_[1]), cz = int(origin / (nc_[0] * nc_[1]));
+  auto cell = [&](const int (&p)[3]) {
+    return (std::size_t((cz + p[2]) % nc_[2]) * nc_[1] + (cy + p[1]) % nc_[1]) * nc_[0] + (cx + p[0]) % nc_[0];
+  };
+  for (std::uint32_t a = cell_start_[origin]; a < cell_start_[origin + 1]; ++a)
+    for (std::uint32_t b = a + 1; b < cell_start_[origin + 1]; ++b) visit(cell_beads_[a], cell_beads_[b]);
+  for (const CellPair& cp : kBlockCellPairs) {
+    const std::size_t A = cell(cp.p), B = cell(cp.q);
+    for (std::uint32_t a = cell_start_[A]; a < cell_start_[A + 1]; ++a)
+      for (std::uint32_t b = cell_start_[B]; b < cell_start_[B + 1]; ++b) visit(cell_beads_[a], cell_beads_[b]);
+  }
+}
+
+void ShardlowSweep::sweep_all_pairs(System& s, std::uint64_t step) {
+  const std::size_t n = s.size();
+  const double Lx = s.box.L[0], Ly = s.box.L[1], Lz = s.box.L[2];
+  const double hx = 0.5 * Lx, hy = 0.5 * Ly, hz = 0.5 * Lz, rc2 = rc_ * rc_;
+  for (std::uint32_t i = 0; i < n; ++i)
+    for (std::uint32_t j = i + 1; j < n; ++j) {
+      const double dx = min_image(s.x[j] - s.x[i], Lx, hx), dy = min_image(s.y[j] - s.y[i], Ly, hy),
+                   dz = min_image(s.z[j] - s.z[i], Lz, hz);
+      const double r2 = dx * dx + dy * dy + dz * dz;
+      if (r2 < rc2 && r2 > 0) update_pair(s, i, j, dx, dy, dz, r2, step, zeta_sums_);
+    }
+}
+
+void ShardlowSweep::sweep(System& s, std::uint64_t step) {
+  zeta_sums_ = ZetaSums{};
   build_cells(s);
-  if (std::min({nc_[0], nc_[1], nc_[2]}) < 3) {
-    for (std::uint32_t i = 0; i < n; ++i)
-      for (std::uint32_t j = i + 1; j < n; ++j) visit(i, j);
-    return;
+  if (std::min({nc_[0], nc_[1], nc_[2]}) < 3) return sweep_all_pairs(s, step);
+  colour_blocks();
+  block_zeta_.assign(block_order_.size(), ZetaSums{});
+  const int threads = stream_ ? 1 : threads_ > 0 ? threads_ : omp_get_max_threads();
+#pragma omp parallel num_threads(threads)
+  for (int k = 0; k < kColours; ++k) {
+    // The implicit barrier at the loop's end keeps colours apart.
+#pragma omp for schedule(static)
+    for (std::size_t b = colour_start_[k]; b < colour_start_[k + 1]; ++b)
+      sweep_block(s, block_order_[b], step, block_zeta_[b]);
   }
-  for (std::uint32_t i = 0; i < n; ++i) {
-    const int c = static_cast<int>(bead_cell_[i]);
-    const int cx = c % nc_[0], cy = (c / nc_[0]) % nc_[1], cz = c / (nc_[0] * nc_[1]);
-    for (int oz = -1; oz <= 1; ++oz)
-      for (int oy = -1; oy <= 1; ++oy)
-        for (int ox = -1; ox <= 1; ++ox) {
-          const int nx = (cx + ox + nc_[0]) % nc_[0], ny = (cy + oy + nc_[1]) % nc_[1],
-                    nz = (cz + oz + nc_[2]) % nc_[2];
-          const std::size_t nb = std::size_t(nz * nc_[1] + ny) * nc_[0] + nx;
-          for (std::uint32_t k = cell_start_[nb]; k < cell_start_[nb + 1]; ++k)
-            if (cell_beads_[k] > i) visit(i, cell_beads_[k]);
-        }
-  }
+  for (const ZetaSums& z : block_zeta_) zeta_sums_.merge(z);
 }
 
 ForceSums ShardlowS1::start(System& s, const ForceFn& force) {

@@ -6,9 +6,16 @@
 // Δt, so the kinetic temperature stays at k_BT where Groot–Warren's scheme runs hot (Nikunen, Karttunen &
 // Vattulainen, Comput. Phys. Commun. 153, 407 (2003), compare both).
 //
-// The sweep updates v_i and v_j before the next pair is visited, so it is serial by nature: pairs are visited
-// in a fixed order (bead i ascending, then its cell neighbours), and the result does not depend on the thread
-// count. It uses its own pair enumeration (all pairs for small boxes, else a cell sweep).
+// The sweep updates v_i and v_j before the next pair is visited, so pairs that share a bead must be visited in
+// a fixed order. With at least 3 cells of width ≥ r_c a side, the cells are grouped into 2×2×2 blocks, one at
+// every cell; the block at cell c owns the pairs of c with itself and of the 13 cell pairs {c+p, c+q}, p, q in
+// {0,1}³, that differ by 1 along some axes and sit at 0 along the others, so that each cell pair within r_c has
+// one owner. Blocks are coloured by their origin's parity along each axis (a third colour for the last cell of
+// an odd axis, whose block wraps onto cell 0): two blocks of one colour share no cell. The sweep takes the
+// colours in turn and a colour's blocks in parallel; a bead's updates within a colour all come from its one
+// block, in the block's fixed pair order, so the result is bitwise the same for any thread count. The mt19937
+// stream is drawn in sweep order and so runs the same order on one thread. Fewer than 3 cells a side, a cell
+// would neighbour itself or another cell twice: all pairs i < j are swept on one thread.
 #include <functional>
 #include <memory>
 #include <vector>
@@ -32,16 +39,25 @@ class ShardlowSweep {
   const ZetaSums& zeta_sums() const { return zeta_sums_; }
 
  private:
-  // S1 update of one pair (i < j) at minimum-image separation d = r_j − r_i, r² < r_c².
+  // S1 update of one pair (i < j) at minimum-image separation d = r_j − r_i, r² < r_c², its ζ added to z.
   void update_pair(System& s, std::uint32_t i, std::uint32_t j, double dx, double dy, double dz, double r2,
-                   std::uint64_t step);
+                   std::uint64_t step, ZetaSums& z) const;
   void build_cells(const System& s);
+  void colour_blocks();
+  void sweep_block(System& s, std::uint32_t origin, std::uint64_t step, ZetaSums& z) const;
+  void sweep_all_pairs(System& s, std::uint64_t step);
 
   double rc_, gamma_, sigma_, dt_;
+  int threads_;  // 0: OpenMP's default
+  bool stream_;  // the mt19937 stream: one thread, draws in sweep order
   std::function<double(const rng::PairInput&)> zeta_;
   ZetaSums zeta_sums_;
   int nc_[3] = {0, 0, 0};
   std::vector<std::uint32_t> cell_start_, cell_beads_, bead_cell_;
+  // Block origins grouped by colour (colour k: block_order_[colour_start_[k] .. colour_start_[k+1])).
+  std::vector<std::uint32_t> colour_start_, block_order_;
+  int coloured_for_[3] = {0, 0, 0};
+  std::vector<ZetaSums> block_zeta_;  // per block origin, summed in sweep order after the sweep
 };
 
 // Velocity-Verlet for the forces of `force` (which must leave out the dissipative and random forces) preceded,
