@@ -2,7 +2,7 @@
 // all/cells × generators × rounds, the RNG's share of a step by difference against the same run with ζ = 0
 // (no generator, no distribution) and with the seed words passed unhashed (no generator), and the paper's
 // headline: the all-pairs 256-bead run with tea32(8) against tea32(1) (Okada et al. 2021: RNG 40 % of the
-// time at 8 rounds, 1.5x faster at 1 round).
+// time at 8 rounds, 1.5x faster at 1 round). The cells-mode 1- vs 2-thread comparison runs either integrator.
 #include <unistd.h>
 
 #include <algorithm>
@@ -29,6 +29,7 @@ struct BenchDpdArgs {
   std::string rounds = "1,8,32";
   std::string pairs = "all,cells";
   std::string distribution = "gauss", feed = "halves";
+  std::string integrator = "mvv";
   std::int64_t steps_all = 2000, steps_cells = 100;
   int particles_cells = 24000;
   int threads = 1;
@@ -47,6 +48,7 @@ struct Measured {
   std::int64_t steps = 0;
   int threads = 1;
   double median_s = 0, particle_steps_per_s = 0;
+  double pair_steps_per_s = 0;  // pairs inside r_c per step (the run's mean) × steps / median_s
   double share_estimate = 0;
 };
 
@@ -71,6 +73,7 @@ dpd::WaterConfig scene(const BenchDpdArgs& a, dpd::PairMode mode, std::int64_t s
   c.steps = c.equilibrate + steps;
   c.observables = false;
   c.threads = a.threads;
+  c.integrator = dpd::parse_integrator(a.integrator);
   c.distribution = rng::parse_distribution(a.distribution);
   c.feed = rng::parse_feed(a.feed);
   rng::check_feed(c.distribution, c.feed);
@@ -89,7 +92,7 @@ dpd::Timings run_once(const Case& k) {
 
 using stats::median;
 
-Measured summarise(const Case& k, const std::vector<double>& t, double share) {
+Measured summarise(const Case& k, const std::vector<double>& t, double share, double pairs_per_step = 0) {
   Measured m;
   m.label = k.label;
   m.pairs = std::string(dpd::to_string(k.cfg.pairs));
@@ -98,6 +101,7 @@ Measured summarise(const Case& k, const std::vector<double>& t, double share) {
   m.threads = k.cfg.threads;
   m.median_s = median(t);
   m.particle_steps_per_s = double(m.particles) * m.steps / m.median_s;
+  m.pair_steps_per_s = pairs_per_step * m.steps / m.median_s;
   m.share_estimate = share;
   return m;
 }
@@ -150,14 +154,18 @@ Scaling measure_scaling(Case k, int repeat) {
   k.cfg.threads = 1, k2.cfg.threads = 2;
   std::vector<double> t1, t2;
   Scaling out;
+  double pairs_per_step = 0;
   for (int r = 0; r < repeat; ++r) {
     progress("bench dpd: cells scaling, pair " + std::to_string(r + 1) + " of " + std::to_string(repeat));
-    t1.push_back(run_once(k).production_s);
+    const dpd::Timings one = run_once(k);
+    t1.push_back(one.production_s);
+    // Every force evaluation (the steps and the start) counts its pairs inside r_c.
+    pairs_per_step = double(one.zetas) / double(k.cfg.steps + 1);
     t2.push_back(run_once(k2).production_s);
     out.ratios.push_back(t1.back() / t2.back());
     out.machine_ratios.push_back(2 * t1.back() / side_by_side(k));
   }
-  out.one = summarise(k, t1, 0), out.two = summarise(k2, t2, 0);
+  out.one = summarise(k, t1, 0, pairs_per_step), out.two = summarise(k2, t2, 0, pairs_per_step);
   out.speedup = median(out.ratios), out.machine = median(out.machine_ratios);
   return out;
 }
@@ -175,6 +183,7 @@ Case baseline(dpd::WaterConfig c, dpd::NoiseOverride o) {
 nlohmann::json to_json(const Measured& m) {
   return {{"case", m.label}, {"pairs", m.pairs}, {"particles", m.particles}, {"steps", m.steps},
           {"threads", m.threads}, {"median_s", m.median_s}, {"particle_steps_per_s", m.particle_steps_per_s},
+          {"pair_steps_per_s", m.pair_steps_per_s},
           {"rng_share_estimate", m.share_estimate}};
 }
 
@@ -253,15 +262,17 @@ void print_paper(const BenchDpdArgs& a, const Paper& p) {
             << "  10 000 steps with tea32(1): " << p.full_run_s() << " s" << (a.paper ? "" : " (extrapolated)") << "\n";
 }
 
-void print_scaling(const Scaling& sc) {
+void print_scaling(const BenchDpdArgs& a, const Scaling& sc) {
   auto range = [](const std::vector<double>& v) {
     std::ostringstream o;
     o << std::setprecision(3) << *std::min_element(v.begin(), v.end()) << "-" << *std::max_element(v.begin(), v.end());
     return o.str();
   };
-  std::cout << std::setprecision(3) << "\ncells, " << sc.one.particles << " beads, tea32(1), one and two threads "
-            << "alternately, " << sc.ratios.size() << " pairs: 1 thread " << sc.one.particle_steps_per_s
-            << " p-steps/s, 2 threads " << sc.two.particle_steps_per_s << " p-steps/s (medians), speed-up "
+  std::cout << std::setprecision(3) << "\ncells, " << sc.one.particles << " beads, tea32(1), integrator "
+            << a.integrator << ", one and two threads alternately, " << sc.ratios.size() << " pairs: 1 thread "
+            << sc.one.particle_steps_per_s << " p-steps/s = " << sc.one.pair_steps_per_s << " pair-steps/s, 2 threads "
+            << sc.two.particle_steps_per_s << " p-steps/s = " << sc.two.pair_steps_per_s
+            << " pair-steps/s (medians), speed-up "
             << sc.speedup << "x (median of the pairs' ratios; range " << range(sc.ratios) << ")\n"
             << "two independent one-thread runs side by side after each pair: " << sc.machine
             << "x together (median; range " << range(sc.machine_ratios) << "); the threaded speed-up is "
@@ -274,6 +285,10 @@ void run_bench_dpd(const BenchDpdArgs& a) {
   if (a.threads < 1) throw InputError("--threads must be at least 1");
   if (a.steps_all < 1 || a.steps_cells < 1) throw InputError("--steps-all and --steps-cells must be at least 1");
   if (a.scaling_only && !a.scaling) throw InputError("--scaling-only and --no-scaling exclude each other");
+  // The table and the paper setting time MVV's pair noise against ζ = 0 and unhashed runs, which Shardlow's
+  // sweep has no counterpart of.
+  if (dpd::parse_integrator(a.integrator) != dpd::Integrator::mvv && !a.scaling_only)
+    throw InputError("--integrator " + a.integrator + " times the 1- vs 2-thread comparison only: add --scaling-only");
   const auto& tea = rng::find_generator("tea32");
   for (int r : parse_list<int>(a.rounds, "--rounds", {1, kIntMax}))
     if (r < tea.min_rounds || r > tea.max_rounds)
@@ -285,6 +300,7 @@ void run_bench_dpd(const BenchDpdArgs& a) {
 
   nlohmann::json out;
   out["context"] = {{"version", dpdrng::kVersion}, {"threads", a.threads}, {"repeat", a.repeat},
+                    {"integrator", a.integrator},
                     {"distribution", a.distribution}, {"feed", a.feed}, {"statistic", "median wall time of the production steps (after a short untimed start)"}};
   const std::vector<Measured> table = a.scaling_only ? std::vector<Measured>{} : measure_table(a);
   const Paper paper = a.scaling_only ? Paper{} : measure_paper(a);
@@ -316,7 +332,7 @@ void run_bench_dpd(const BenchDpdArgs& a) {
     return;
   }
   if (!a.scaling_only) print_table(a, table), print_paper(a, paper);
-  if (scaling) print_scaling(*scaling);
+  if (scaling) print_scaling(a, *scaling);
 }
 
 const bool registered = register_command(62, [](CLI::App& root) {
@@ -327,6 +343,10 @@ const bool registered = register_command(62, [](CLI::App& root) {
   sub->add_option("--rounds", a->rounds, "round counts for tea32/tea64")->capture_default_str();
   sub->add_option("--pairs", a->pairs, "all, cells or all,cells")->capture_default_str();
   sub->add_option("--distribution", a->distribution, "gauss or uniform")->capture_default_str();
+  sub->add_option("--integrator", a->integrator,
+                  "mvv or shardlow (S1 splitting, its sweep coloured for threads; with --scaling-only)")
+      ->check(CLI::IsMember({"mvv", "shardlow"}))
+      ->capture_default_str();
   sub->add_option("--feed", a->feed, "uniforms feeding the Gaussian: halves, blocks or inverse (simulate --help)")
       ->capture_default_str();
   add_integer(*sub, "--steps-all", a->steps_all, "steps of the 256-bead all-pairs runs", {1, kIntMax});

@@ -29,8 +29,25 @@ TEST(CliBenchDpd, ScalingOnlyReportsEveryPairAndTheSideBySideRuns) {
   EXPECT_EQ(j["scaling_side_by_side_2_copies"].get<double>(), 0.5 * (a + b));
 }
 
+// Shardlow's coloured sweep at one and two threads: both runs reported with their pairs inside r_c per second.
+TEST(CliBenchDpd, ScalingTimesShardlow) {
+  const Result r = run("bench dpd --scaling-only --integrator shardlow --repeat 1 --steps-cells 5 "
+                       "--particles-cells 3000 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["context"]["integrator"], "shardlow");
+  ASSERT_EQ(j["scaling"].size(), 2u);
+  for (const auto& m : j["scaling"]) {
+    // ρ = 3: about 2πρ/3 ≈ 6.3 pairs per bead inside r_c.
+    const double per_bead = m["pair_steps_per_s"].get<double>() / m["particle_steps_per_s"].get<double>();
+    EXPECT_GT(per_bead, 5.0) << m;
+    EXPECT_LT(per_bead, 8.0) << m;
+  }
+}
+
 TEST(CliBenchDpd, RefusesBadArgumentsBeforeAnyRun) {
   for (const char* args : {"bench dpd --repeat 0", "bench dpd --scaling-only --no-scaling",
+                           "bench dpd --integrator shardlow", "bench dpd --scaling-only --integrator verlet",
                            "bench dpd --generators tea32,nope", "bench dpd --rounds 0", "bench dpd --pairs some"}) {
     const Result r = run(args);
     EXPECT_EQ(r.code, 2) << args;
