@@ -17,7 +17,9 @@ std::vector<std::pair<int, Attach>>& commands();
 
 namespace {
 
-constexpr const char* kGompSpinCount = "3000";
+// ~15 us of pause instructions where one takes 140 cycles, a few where it takes 10: beside a busy loop on one of two
+// cores, 3000 still left a two-thread paper run at twice the one-thread time, 300 000 (the default) at 25 times.
+constexpr const char* kGompSpinCount = "300";
 
 // Help and version text go to standard output like any result: a lost one is a write error.
 int exit_with_text(CLI::App& app, const CLI::ParseError& e) {
@@ -54,7 +56,7 @@ std::string subcommand_message(CLI::App& root) {
 // says otherwise, a thread waiting at a barrier spins 300 000 pause instructions before it sleeps, up to ~15 ms
 // where a pause takes 140 cycles. On a machine shared with other work the spinning thread holds a core that a
 // preempted team-mate needs, and a two-thread run ends up slower than one thread. Unless the user chose a
-// policy, the process therefore runs itself again, once, with a spin of a few tens of microseconds.
+// policy, the process therefore runs itself again, once, with a short spin (kGompSpinCount).
 void bound_openmp_spin(char** argv) {
   if (std::getenv("OMP_WAIT_POLICY") != nullptr || std::getenv("GOMP_SPINCOUNT") != nullptr) return;
   if (setenv("GOMP_SPINCOUNT", kGompSpinCount, 1) != 0) return;
