@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # The README's test command: installs what is missing (Debian packages), builds, runs the test suite, and builds
 # and runs examples/pair_force against the package installed into a temporary prefix.
-# DPDRNG_SANITIZE=1 also builds and runs the whole suite under AddressSanitizer + UBSan (.ci/run sets it); any
-# failure in either build or either ctest run ends the script with a non-zero status.
+# DPDRNG_SANITIZE=1 also builds and runs the whole suite under AddressSanitizer + UBSan, and DPDRNG_PORTABLE=1
+# builds the portable preset's dpdrng and checks its results bit for bit against the release build's
+# (tests/portable.sh; x86-64 only). .ci/run sets both. Any failure in a build, a ctest run or the check ends the
+# script with a non-zero status.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./study/install-deps.sh
@@ -14,6 +16,10 @@ cmake --preset release -DDPDRNG_BUILD_TESTS=ON >/dev/null
 cmake --build --preset release -j "$jobs"
 step "release tests"
 ctest --preset release -j "$jobs" --no-tests=error
+if [[ "${DPDRNG_PORTABLE:-0}" == 1 && "$(uname -m)" == x86_64 ]]; then
+  step "portable build (x86-64-v3), results bit for bit against the release build"
+  DPDRNG_JOBS=$jobs ./tests/portable.sh
+fi
 step "install, and the example consumer built against it"
 # A throw-away prefix: examples/pair_force finds the package there through find_package(dpdrng).
 prefix=$(mktemp -d)

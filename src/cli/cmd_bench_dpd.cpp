@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <exception>
 #include <iomanip>
 #include <iostream>
@@ -17,6 +18,7 @@
 #include "dpdrng/cli/checked.hpp"
 #include "dpdrng/cli/registry.hpp"
 #include "dpdrng/common/error.hpp"
+#include "dpdrng/common/machine.hpp"
 #include "dpdrng/dpd/water.hpp"
 #include "dpdrng/stats/summary.hpp"
 #include "dpdrng/version.hpp"
@@ -34,7 +36,7 @@ struct BenchDpdArgs {
   int particles_cells = 24000;
   int threads = 1;
   int repeat = 3;
-  bool paper = false, json = false, scaling = true, scaling_only = false;
+  bool paper = false, json = false, scaling = true, scaling_only = false, oversubscribe = false;
 };
 
 struct Case {
@@ -170,6 +172,57 @@ Scaling measure_scaling(Case k, int repeat) {
   return out;
 }
 
+// Oversubscription: a busy loop of our own takes one core, as another job on a shared node or a laptop would,
+// and one- and two-thread runs alternate beside it. Two threads then share the remaining core time with the
+// loop; waits that spin on would burn what the other thread needs, and the two-thread run would take twice the
+// one-thread time or more.
+class BusyLoop {
+ public:
+  BusyLoop()
+      : thread_([this] {
+          double x = 1;
+          while (!stop_.load(std::memory_order_relaxed)) {
+            for (int i = 0; i < 4096; ++i) x = x * 0.999999 + 1e-7;
+            sink_ = x;
+          }
+        }) {}
+  ~BusyLoop() {
+    stop_.store(true, std::memory_order_relaxed);
+    thread_.join();
+  }
+
+ private:
+  std::atomic<bool> stop_{false};
+  volatile double sink_ = 0;
+  std::thread thread_;
+};
+
+struct Oversubscribed {
+  std::string scene;
+  Measured one, two;
+  double ratio = 0;  // median over the pairs of t(2 threads) / t(1 thread)
+  std::vector<double> ratios;
+};
+
+Oversubscribed measure_oversubscribed(const std::string& scene, Case k, int repeat) {
+  Case k2 = k;
+  k.cfg.threads = 1, k2.cfg.threads = 2;
+  Oversubscribed out;
+  out.scene = scene;
+  std::vector<double> t1, t2;
+  const BusyLoop busy;
+  for (int r = 0; r < repeat; ++r) {
+    progress("bench dpd: " + scene + " beside a busy loop, pair " + std::to_string(r + 1) + " of " +
+             std::to_string(repeat));
+    t1.push_back(run_once(k).production_s);
+    t2.push_back(run_once(k2).production_s);
+    out.ratios.push_back(t2.back() / t1.back());
+  }
+  out.one = summarise(k, t1, 0), out.two = summarise(k2, t2, 0);
+  out.ratio = median(out.ratios);
+  return out;
+}
+
 Case with_generator(dpd::WaterConfig c, const std::string& name, int rounds) {
   c.generator = rng::validated({name, rounds});
   return {rng::describe(c.generator), c};
@@ -280,11 +333,35 @@ void print_scaling(const BenchDpdArgs& a, const Scaling& sc) {
             << std::defaultfloat;
 }
 
+std::vector<Oversubscribed> measure_oversubscription(const BenchDpdArgs& a) {
+  return {measure_oversubscribed("paper (all pairs, 256 beads)",
+                                 with_generator(scene(a, dpd::PairMode::all, a.steps_all), "tea32", 1), a.repeat),
+          measure_oversubscribed("cells (" + std::to_string(a.particles_cells) + " beads)",
+                                 with_generator(scene(a, dpd::PairMode::cells, a.steps_cells), "tea32", 1),
+                                 a.repeat)};
+}
+
+void print_oversubscription(const std::vector<Oversubscribed>& rows) {
+  std::cout << "\nbeside a busy loop on one core, tea32(1), one and two threads alternately (medians; the ratio is "
+               "the median of the pairs' t2/t1, at most 1.3 wanted):\n";
+  for (const auto& o : rows)
+    std::cout << std::setprecision(3) << "  " << std::left << std::setw(30) << o.scene << std::right << " 1 thread "
+              << o.one.median_s << " s, 2 threads " << o.two.median_s << " s, ratio " << o.ratio << " (range "
+              << *std::min_element(o.ratios.begin(), o.ratios.end()) << "-"
+              << *std::max_element(o.ratios.begin(), o.ratios.end()) << ")\n";
+}
+
+nlohmann::json to_json(const Oversubscribed& o) {
+  return {{"scene", o.scene}, {"one_thread", to_json(o.one)}, {"two_threads", to_json(o.two)},
+          {"ratio_2_to_1", o.ratio}, {"pair_ratios", o.ratios}};
+}
+
 void run_bench_dpd(const BenchDpdArgs& a) {
   if (a.repeat < 1) throw InputError("--repeat must be at least 1");
   if (a.threads < 1) throw InputError("--threads must be at least 1");
   if (a.steps_all < 1 || a.steps_cells < 1) throw InputError("--steps-all and --steps-cells must be at least 1");
   if (a.scaling_only && !a.scaling) throw InputError("--scaling-only and --no-scaling exclude each other");
+  if (a.oversubscribe && a.scaling_only) throw InputError("--oversubscribe and --scaling-only exclude each other");
   // The table and the paper setting time MVV's pair noise against ζ = 0 and unhashed runs, which Shardlow's
   // sweep has no counterpart of.
   if (dpd::parse_integrator(a.integrator) != dpd::Integrator::mvv && !a.scaling_only)
@@ -299,9 +376,22 @@ void run_bench_dpd(const BenchDpdArgs& a) {
   for (const auto& g : split(a.generators)) rng::find_generator(g);  // InputError for unknown names
 
   nlohmann::json out;
-  out["context"] = {{"version", dpdrng::kVersion}, {"threads", a.threads}, {"repeat", a.repeat},
+  out["context"] = {{"version", dpdrng::kVersion}, {"cpu_model", cpu_model()}, {"simd_width_bits", simd_width_bits()},
+                    {"simd", simd_name()}, {"threads", a.threads}, {"repeat", a.repeat},
                     {"integrator", a.integrator},
                     {"distribution", a.distribution}, {"feed", a.feed}, {"statistic", "median wall time of the production steps (after a short untimed start)"}};
+  if (a.oversubscribe) {
+    const auto rows = measure_oversubscription(a);
+    progress("");
+    if (a.json) {
+      for (const auto& o : rows) out["oversubscribed"].push_back(to_json(o));
+      std::cout << out.dump(2) << "\n";
+      return;
+    }
+    std::cout << cpu_model() << ", " << simd_width_bits() << "-bit SIMD (" << simd_name() << ")\n";
+    print_oversubscription(rows);
+    return;
+  }
   const std::vector<Measured> table = a.scaling_only ? std::vector<Measured>{} : measure_table(a);
   const Paper paper = a.scaling_only ? Paper{} : measure_paper(a);
   std::optional<Scaling> scaling;
@@ -331,6 +421,7 @@ void run_bench_dpd(const BenchDpdArgs& a) {
     std::cout << out.dump(2) << "\n";
     return;
   }
+  std::cout << cpu_model() << ", " << simd_width_bits() << "-bit SIMD (" << simd_name() << ")\n";
   if (!a.scaling_only) print_table(a, table), print_paper(a, paper);
   if (scaling) print_scaling(a, *scaling);
 }
@@ -360,6 +451,10 @@ const bool registered = register_command(62, [](CLI::App& root) {
   sub->add_flag("--scaling-only", a->scaling_only,
                 "only the 1- vs 2-thread cells comparison: --repeat pairs of runs, one and two threads alternately, "
                 "each followed by two one-thread copies side by side (the machine's own two-core speed-up)");
+  sub->add_flag("--oversubscribe", a->oversubscribe,
+                "only this: the paper scene (--steps-all) and the cells scene (--steps-cells) with one and two "
+                "threads alternately (--repeat pairs) beside a busy loop that bench dpd starts on a thread of its "
+                "own, and each two-thread time against the one-thread time");
   sub->add_flag("--json", a->json, "machine-readable output");
   sub->callback([a] { run_bench_dpd(*a); });
 });

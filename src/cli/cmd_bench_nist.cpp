@@ -12,6 +12,7 @@
 #include "dpdrng/cli/checked.hpp"
 #include "dpdrng/cli/registry.hpp"
 #include "dpdrng/common/error.hpp"
+#include "dpdrng/common/machine.hpp"
 #include "dpdrng/rng/stream.hpp"
 #include "dpdrng/stats/nist/battery.hpp"
 
@@ -73,6 +74,8 @@ void run_bench(const BenchArgs& a) {
                       {"bits", a.bits},
                       {"generator", rng::describe(a.gen.spec())},
                       {"threads", omp_get_max_threads()},
+                      {"cpu_model", cpu_model()},
+                      {"simd_width_bits", simd_width_bits()},
                       {"tests", rows},
                       {"sum_cpu_s", cpu_sum},
                       {"battery", {{"cpu_s", b1.cpu - b0.cpu}, {"wall_s", b1.wall - b0.wall}}}};
@@ -80,8 +83,9 @@ void run_bench(const BenchArgs& a) {
     std::cout << j.dump(1) << "\n";
     return;
   }
-  std::printf("SP800-22 battery, %d sequences of %zu bits (%s), %d threads\n", a.sequences, a.bits,
-              rng::describe(a.gen.spec()).c_str(), omp_get_max_threads());
+  std::printf("SP800-22 battery, %d sequences of %zu bits (%s), %d threads\n%s, %d-bit SIMD (%s)\n", a.sequences,
+              a.bits, rng::describe(a.gen.spec()).c_str(), omp_get_max_threads(), cpu_model().c_str(),
+              simd_width_bits(), simd_name());
   std::printf("%-26s %10s %10s\n", "test", "CPU s", "wall s");
   for (const auto& r : rows)
     std::printf("%-26s %10.3f %10.3f\n", r["test"].get<std::string>().c_str(), r["cpu_s"].get<double>(),

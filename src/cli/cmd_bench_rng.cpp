@@ -21,6 +21,7 @@
 #include "dpdrng/cli/checked.hpp"
 #include "dpdrng/cli/registry.hpp"
 #include "dpdrng/common/error.hpp"
+#include "dpdrng/common/machine.hpp"
 #include "dpdrng/rng/inverse_normal.hpp"
 #include "dpdrng/rng/stream.hpp"
 #include "dpdrng/stats/summary.hpp"
@@ -264,15 +265,9 @@ nlohmann::json run_context(const Collector& c, const BenchArgs& a) {
 #else
   const char* build = "debug (unoptimised)";
 #endif
-#if defined(__AVX512F__)
-  const char* simd = "avx512f";
-#elif defined(__AVX2__)
-  const char* simd = "avx2";
-#else
-  const char* simd = "baseline";
-#endif
   return {{"host", host},          {"date", utc_now()},        {"dpdrng_version", dpdrng::kVersion},
-          {"compiler", compiler},  {"build_type", build},      {"simd", simd},
+          {"compiler", compiler},  {"build_type", build},      {"simd", simd_name()},
+          {"simd_width_bits", simd_width_bits()}, {"cpu_model", cpu_model()},
           {"num_cpus", c.cpus_},   {"mhz_per_cpu", c.mhz_},    {"cpu_scaling_enabled", c.scaling_},
           {"load_avg", c.load_},   {"min_time_s", a.min_time}, {"repetitions", a.repetitions},
           {"buffer_outputs", a.buffer},  {"time", "process CPU time, median over repetitions"}};
@@ -384,9 +379,10 @@ void run_bench(const BenchArgs& a) {
     std::printf("\n");
   }
   const nlohmann::json ctx = run_context(collector, a);
-  std::printf("\n%s, %s, %s, %s, dpdrng %s, %d CPUs at %.0f MHz%s\n", ctx["host"].get<std::string>().c_str(),
+  std::printf("\n%s, %s, %s, %s, %s (%d-bit), dpdrng %s, %d CPUs at %.0f MHz%s\n",
+              ctx["host"].get<std::string>().c_str(), ctx["cpu_model"].get<std::string>().c_str(),
               ctx["compiler"].get<std::string>().c_str(), ctx["build_type"].get<std::string>().c_str(),
-              ctx["simd"].get<std::string>().c_str(), dpdrng::kVersion, collector.cpus_, collector.mhz_,
+              ctx["simd"].get<std::string>().c_str(), simd_width_bits(), dpdrng::kVersion, collector.cpus_, collector.mhz_,
               collector.scaling_ ? ", CPU frequency scaling on" : "");
 }
 

@@ -1,5 +1,8 @@
 // dpdrng: thin glue from the command line to the library; every subcommand registers itself (registry.hpp).
+#include <unistd.h>
+
 #include <algorithm>
+#include <cstdlib>
 #include <iostream>
 
 #include "dpdrng/cli/checked.hpp"
@@ -13,6 +16,10 @@ namespace dpdrng::cli {
 std::vector<std::pair<int, Attach>>& commands();
 
 namespace {
+
+// ~15 us of pause instructions where one takes 140 cycles, a few where it takes 10: beside a busy loop on one of two
+// cores, 3000 still left a two-thread paper run at twice the one-thread time, 300 000 (the default) at 25 times.
+constexpr const char* kGompSpinCount = "300";
 
 // Help and version text go to standard output like any result: a lost one is a write error.
 int exit_with_text(CLI::App& app, const CLI::ParseError& e) {
@@ -45,10 +52,23 @@ std::string subcommand_message(CLI::App& root) {
   return path + " needs a command (one of: " + names + ")";
 }
 
+// libgomp reads its wait policy once, when it is loaded, before main(): unless OMP_WAIT_POLICY or GOMP_SPINCOUNT
+// says otherwise, a thread waiting at a barrier spins 300 000 pause instructions before it sleeps, up to ~15 ms
+// where a pause takes 140 cycles. On a machine shared with other work the spinning thread holds a core that a
+// preempted team-mate needs, and a two-thread run ends up slower than one thread. Unless the user chose a
+// policy, the process therefore runs itself again, once, with a short spin (kGompSpinCount).
+void bound_openmp_spin(char** argv) {
+  if (std::getenv("OMP_WAIT_POLICY") != nullptr || std::getenv("GOMP_SPINCOUNT") != nullptr) return;
+  if (setenv("GOMP_SPINCOUNT", kGompSpinCount, 1) != 0) return;
+  execv("/proc/self/exe", argv);  // returns only if that failed: run on with libgomp's default
+  unsetenv("GOMP_SPINCOUNT");
+}
+
 }  // namespace
 }  // namespace dpdrng::cli
 
 int main(int argc, char** argv) {
+  dpdrng::cli::bound_openmp_spin(argv);
   dpdrng::study::init_libraries();
   CLI::App app{"dpdrng: how cheap may the per-pair random numbers of a DPD simulation be?\n"
                "Hash generators, statistical tests, a DPD engine and a study driver in one tool.",

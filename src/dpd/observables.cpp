@@ -201,23 +201,37 @@ Msd MsdRecorder::finish() const {
 }
 
 namespace {
-// Partners j > i of bead i: those in the 27 cells around it, or every later bead when there is no grid.
-template <class F>
-void for_partners(const System& s, const CellGrid& grid, std::size_t i, F&& f) {
+// Squared minimum-image separations of bead i to its partners j > i (all of them, or those in the 27 cells
+// around i), into r2. Without a grid the partners are contiguous and the pass has no control flow, so it
+// vectorises.
+void partner_r2(const System& s, const CellGrid& grid, std::size_t i, std::vector<double>& r2) {
+  const double Lx = s.box.L[0], Ly = s.box.L[1], Lz = s.box.L[2];
+  const double hx = Lx / 2, hy = Ly / 2, hz = Lz / 2;
+  const double xi = s.x[i], yi = s.y[i], zi = s.z[i];
+  auto sep2 = [&](double x, double y, double z) {
+    const double dx = min_image(x - xi, Lx, hx), dy = min_image(y - yi, Ly, hy), dz = min_image(z - zi, Lz, hz);
+    return dx * dx + dy * dy + dz * dz;
+  };
+  r2.clear();
   if (!grid.usable()) {
-    for (std::size_t j = i + 1; j < s.size(); ++j) f(j);
+    const std::size_t m = s.size() - i - 1;
+    r2.resize(m);
+    const double *x = s.x.data() + i + 1, *y = s.y.data() + i + 1, *z = s.z.data() + i + 1;
+    double* out = r2.data();
+    for (std::size_t t = 0; t < m; ++t) out[t] = sep2(x[t], y[t], z[t]);
     return;
   }
   int cells[27];
-  grid.stencil(grid.cell_of(s.x[i], s.y[i], s.z[i]), cells);
+  grid.stencil(grid.cell_of(xi, yi, zi), cells);
   for (int c : cells)
-    for (std::uint32_t k = grid.start()[c]; k < grid.start()[c + 1]; ++k)
-      if (grid.beads()[k] > i) f(grid.beads()[k]);
+    for (std::uint32_t k = grid.start()[c]; k < grid.start()[c + 1]; ++k) {
+      const std::uint32_t j = grid.beads()[k];
+      if (j > i) r2.push_back(sep2(s.x[j], s.y[j], s.z[j]));
+    }
 }
 }  // namespace
 
 void RdfHistogram::sample(const System& s, int block) {
-  const double Lx = s.box.L[0], Ly = s.box.L[1], Lz = s.box.L[2];
   const double r2max = rmax_ * rmax_, inv_dr = bins_ / rmax_;
   CellGrid grid;
   if (s.size() > 2000) grid.build(s, rmax_);
@@ -225,15 +239,12 @@ void RdfHistogram::sample(const System& s, int block) {
 #pragma omp parallel num_threads(threads_) if (grid.usable())
   {
     std::vector<std::uint64_t> mine(std::size_t(bins_), 0);
+    std::vector<double> r2;
 #pragma omp for schedule(dynamic, 256)
     for (std::int64_t q = 0; q < n; ++q) {
-      const std::size_t i = static_cast<std::size_t>(q);
-      for_partners(s, grid, i, [&](std::size_t j) {
-        const double dx = min_image(s.x[j] - s.x[i], Lx, Lx / 2), dy = min_image(s.y[j] - s.y[i], Ly, Ly / 2),
-                     dz = min_image(s.z[j] - s.z[i], Lz, Lz / 2);
-        const double r2 = dx * dx + dy * dy + dz * dz;
-        if (r2 < r2max) ++mine[std::min<std::size_t>(bins_ - 1, std::size_t(std::sqrt(r2) * inv_dr))];
-      });
+      partner_r2(s, grid, static_cast<std::size_t>(q), r2);
+      for (const double v : r2)
+        if (v < r2max) ++mine[std::min<std::size_t>(bins_ - 1, std::size_t(std::sqrt(v) * inv_dr))];
     }
 #pragma omp critical(dpdrng_rdf)
     for (std::size_t b = 0; b < mine.size(); ++b) counts_[std::size_t(block)][b] += mine[b];

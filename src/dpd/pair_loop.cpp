@@ -410,7 +410,7 @@ class PairLoop final : public PairForces {
 
   void await_layer(int z) {
     std::atomic_ref<int> done(done_[z]);
-    while (done.load(std::memory_order_acquire) == 0) cpu_relax();
+    wait_until([&] { return done.load(std::memory_order_acquire) != 0; });
   }
 
   // One of layer z's two contributors is done; the thread completing the second scatters the layer.

@@ -13,12 +13,15 @@ struct Box {
   double volume() const { return L[0] * L[1] * L[2]; }
 };
 
-// Minimum image of one component, for |d| < 1.5 L (both positions wrapped into [0, L) give |d| < L).
-// A branch rather than round(): it vectorises, and it leaves d untouched (bit for bit) inside the box.
+// Minimum image of one component, for |d| < 1.5 L (both positions wrapped into [0, L) give |d| < L): d − L
+// above half, d + L below −half, d itself otherwise. The shift is picked by selects and always subtracted, so
+// the loops over it have no control flow and vectorise with AVX2 blends as well as AVX-512 masks; the result is
+// bit for bit the branchy one's: d − (−L) rounds exactly as d + L, and d − 0 is d (−0 included).
+// Not round(): that would touch d inside the box.
 inline double min_image(double d, double L, double half) {
-  if (d > half) return d - L;
-  if (d < -half) return d + L;
-  return d;
+  const double up = d > half ? L : 0.0;
+  const double shift = d < -half ? -L : up;
+  return d - shift;
 }
 
 // Member t of a team of nt's contiguous share [lo, hi) of n beads. The integrator and the cell sort split the
