@@ -95,8 +95,14 @@ TEST(BilayerStudyConfig, ShippedConfigSweepsTheMembrane) {
   EXPECT_EQ(c.tests.chi2_steps, 0);
   EXPECT_EQ(c.tests.ttest_pairs, 0);
   const auto cells = enumerate_cells(c);
-  EXPECT_EQ(cells.size(), 16u);  // 4 replicas × (mt19937, tea32(1), tea32(32), philox4x32(10))
-  for (const auto& cell : cells) EXPECT_FALSE(cell.nist) << cell.id();
+  // 4 replicas × 2 feeds (halves, blocks) × (mt19937, tea32(1), tea32(32))
+  EXPECT_EQ(cells.size(), 24u);
+  std::size_t blocks = 0;
+  for (const auto& cell : cells) {
+    EXPECT_FALSE(cell.nist) << cell.id();
+    blocks += cell.feed == "blocks";
+  }
+  EXPECT_EQ(blocks, 12u);
   EXPECT_FALSE(c.canonical()["scene"].contains("a"));
 }
 
