@@ -7,6 +7,6 @@ set grid
 set key outside right top noenhanced
 set datafile missing "nan"
 set arrow from graph 0, first 18.1697 to graph 1, first 18.1697 nohead dt 2 lw 2 lc rgb 'black'
-set xrange [-0.5:3.5]
+set xrange [-0.5:2.5]
 set xtics rotate by -20
 plot "data/bilayer_pressure_xx_gauss_0.dat" using 1:2:3:xtic(4) with yerrorbars pt 7 ps 1.5 lw 2 title "replica mean ± 95 % CI"

@@ -14,7 +14,4 @@ plot "data/bilayer_profiles_gauss_0.dat" using 1:2 with lines dt 1 lw 4 lc rgb '
      "data/bilayer_profiles_gauss_5.dat" using 1:2 with lines dt 3 lw 2 lc 1 title "tea32(1) distance W", \
      "data/bilayer_profiles_gauss_6.dat" using 1:2 with lines dt 1 lw 2 lc 2 title "tea32(32) distance H", \
      "data/bilayer_profiles_gauss_7.dat" using 1:2 with lines dt 2 lw 2 lc 2 title "tea32(32) distance T", \
-     "data/bilayer_profiles_gauss_8.dat" using 1:2 with lines dt 3 lw 2 lc 2 title "tea32(32) distance W", \
-     "data/bilayer_profiles_gauss_9.dat" using 1:2 with lines dt 1 lw 2 lc 3 title "philox4x32(10) distance H", \
-     "data/bilayer_profiles_gauss_10.dat" using 1:2 with lines dt 2 lw 2 lc 3 title "philox4x32(10) distance T", \
-     "data/bilayer_profiles_gauss_11.dat" using 1:2 with lines dt 3 lw 2 lc 3 title "philox4x32(10) distance W"
+     "data/bilayer_profiles_gauss_8.dat" using 1:2 with lines dt 3 lw 2 lc 2 title "tea32(32) distance W"
