@@ -67,6 +67,16 @@ std::string chart_link(const std::string& name, const std::string& alt) {
          ".gp)\n\n";
 }
 
+namespace {
+// The sweep's integrators replace the scene's λ, which then applies to no cell.
+std::string integrator_text(const StudyConfig& config) {
+  if (config.integrators.empty()) return "λ = " + num(config.scene.lambda);
+  std::string list;
+  for (const auto& i : config.integrators) list += (list.empty() ? "" : ", ") + i;
+  return "integrators swept: " + list;
+}
+}  // namespace
+
 std::string report_header(const StudyConfig& config, const Analysis& a, const std::vector<CellResult>& cells,
                           const std::string& detection_limit) {
   const std::size_t expected = enumerate_cells(config).size();
@@ -92,13 +102,15 @@ std::string report_header(const StudyConfig& config, const Analysis& a, const st
        << ") at Δt = 0.005), pairs: " << s.pairs << "\n";
   else
     md << "- scene: " << s.name << ", " << s.particles << " beads, ρ = " << s.density << ", a = " << s.a
-       << ", γ = " << s.gamma << ", k_BT = " << s.kT << ", λ = " << s.lambda << ", "
+       << ", γ = " << s.gamma << ", k_BT = " << s.kT << ", " << integrator_text(config) << ", "
        << (s.time > 0 ? num(s.time) + " units of simulated time at every Δt (" + num(s.equilibrate_time) +
                             " discarded)"
                       : std::to_string(s.steps) + " steps (" + std::to_string(s.equilibrate) + " discarded)")
        << ", pairs: " << s.pairs << "\n";
   md << "- replicas per variant: " << config.replicas << "; reference: " << config.reference << "; α = " << a.alpha
-     << "\n- " << a.error_control_sentence() << "\n- " << detection_limit << "\n- config hash `" << config.hash
+     << "\n- "
+     << (a.family_size ? a.error_control_sentence() : "Error control: none needed (no tests, no verdicts)")
+     << "\n- " << detection_limit << "\n- config hash `" << config.hash
      << "` (the config is stored in study.h5 and study.toml); generated "
      << when << "\n\n";
   return md.str();

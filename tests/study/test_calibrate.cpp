@@ -125,13 +125,21 @@ TEST(Calibrate, ReportReadsAMatchingCalibrationOnly) {
   EXPECT_NE(s.find("with 3 replicas of 20 steps"), std::string::npos) << s;
   EXPECT_NE(s.find("detected 90 % of the time"), std::string::npos) << s;
   EXPECT_NE(s.find("false alarms per study ≤"), std::string::npos) << s;
-  // A different run length, a replica count without a row, or no calibration at all: not calibrated.
+  // Another run length: not calibrated, and the same scene's limit at the calibrated length beside it, named as
+  // such. A replica count without a row, or no calibration at all: not calibrated.
   StudyConfig longer = cfg;
   longer.scene.steps = 40;
+  const std::string l = detection_limit_sentence(longer, tmp.path);
+  EXPECT_NE(l.find("not calibrated at this run length (40 steps)"), std::string::npos) << l;
+  EXPECT_NE(l.find("calibrated at 20 steps"), std::string::npos) << l;
+  EXPECT_NE(l.find("detected 90 % of the time"), std::string::npos) << l;
+  EXPECT_NE(l.find("Runs 2× as long"), std::string::npos) << l;
   StudyConfig more = cfg;
   more.replicas = 5;
-  for (const auto& other : {longer, more})
-    EXPECT_NE(detection_limit_sentence(other, tmp.path).find("not calibrated for this config"), std::string::npos);
+  EXPECT_NE(detection_limit_sentence(more, tmp.path).find("not calibrated for this config"), std::string::npos);
+  StudyConfig other_scene = longer;
+  other_scene.scene.gamma = 4.5;
+  EXPECT_NE(detection_limit_sentence(other_scene, tmp.path).find("not calibrated for this config"), std::string::npos);
   EXPECT_NE(detection_limit_sentence(cfg, tmp.path / "nowhere").find("not calibrated"), std::string::npos);
 
   // The study report carries the sentence in its header.

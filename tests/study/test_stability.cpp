@@ -173,6 +173,10 @@ TEST(StabilityCli, CiStudyReportsEveryCell) {
                               "## Accuracy against cost per unit of simulated time", "## Unstable and failed cells"})
     EXPECT_NE(md.find(section), std::string::npos) << section;
   EXPECT_NE(md.find("| mvv:0.5 tea32(1) gauss | 0.5 | 0/2 | blown up: step "), std::string::npos) << md;
+  // The swept integrators, not the scene's unused λ, and no claim of error control over zero tests.
+  EXPECT_NE(md.find("integrators swept: mvv:0.5, shardlow"), std::string::npos) << md.substr(0, 1200);
+  EXPECT_EQ(md.find("λ = 0.5,"), std::string::npos) << md.substr(0, 1200);
+  EXPECT_NE(md.find("Error control: none needed (no tests, no verdicts)"), std::string::npos);
   const StabilityAnalysis a = analyse_stability(c, cells);
   EXPECT_EQ(a.points.size(), 2u * 2u * 4u);
   const std::string csv = read(out / "report" / "stability.csv");
