@@ -18,7 +18,9 @@ std::string with_ci(const ReplicaMean& m) {
   return fmt("%.4f", m.mean) + " ± " + fmt("%.4f", m.ci95) + (m.from_run_sem ? "†" : "");
 }
 
-std::string row_label(const VariantReport& v) { return v.key.label() + (v.key.reference ? "" : " " + v.key.seeding); }
+std::string row_label(const VariantReport& v) {
+  return v.key.label() + (v.key.reference ? "" : " " + v.key.seeding_name());
+}
 
 const char* label_of(const std::string& observable) {
   for (const auto& o : bilayer_observables())
@@ -39,7 +41,7 @@ std::string bilayer_table_markdown(const Analysis& a, const std::string& distrib
   for (std::size_t k = 0; k < bilayer_observables().size(); ++k) o << "---|";
   o << '\n';
   for (const auto& v : a.variants) {
-    if (v.key.distribution != distribution) continue;
+    if (v.key.noise() != distribution) continue;
     o << "| " << row_label(v) << " | " << v.cells.size() << (v.broken.empty() ? "" : " (+" + std::to_string(v.broken.size()) + " broken)")
       << " |";
     for (const auto& b : bilayer_observables())
@@ -55,8 +57,8 @@ std::string bilayer_table_csv(const Analysis& a) {
   for (const auto& v : a.variants)
     for (const auto& b : bilayer_observables()) {
       const ReplicaMean m = replica_mean(v.cells, std::string(b.name) + "_mean", std::string(b.name) + "_sem");
-      o << v.key.generator << ',' << v.key.rounds << ',' << v.key.distribution << ','
-        << (v.key.reference ? "stream" : v.key.seeding) << ',' << detail::num(v.key.dt) << ',' << b.name << ','
+      o << v.key.generator << ',' << v.key.rounds << ',' << v.key.noise() << ','
+        << v.key.seeding_name() << ',' << detail::num(v.key.dt) << ',' << b.name << ','
         << m.n << ',' << detail::num(m.mean) << ',' << detail::num(m.ci95) << ',' << int(m.from_run_sem) << '\n';
     }
   return o.str();
@@ -71,7 +73,7 @@ std::string bilayer_differences_markdown(const Analysis& a, const std::string& d
             "|---|---|---|---|---|---|\n";
   bool any_curve = false;
   for (const auto& v : a.variants) {
-    if (v.key.reference || v.key.distribution != distribution) continue;
+    if (v.key.reference || v.key.noise() != distribution) continue;
     for (const auto& c : v.observables) {
       const std::string b = c.decision.differs ? "**" : "";
       const std::string corrected = c.decision.tested() ? fmt("%.2g", c.decision.p_adjusted) : "–";
@@ -101,7 +103,7 @@ std::string bilayer_differences_csv(const Analysis& a) {
        "reference_sd,pairs,difference,difference_ci95,sigma,test,statistic,dof,p_value,p_adjusted,differs\n";
   for (const auto& v : a.variants)
     for (const auto& c : v.observables)
-      o << v.key.generator << ',' << v.key.rounds << ',' << v.key.distribution << ',' << v.key.seeding << ','
+      o << v.key.generator << ',' << v.key.rounds << ',' << v.key.noise() << ',' << v.key.seeding_name() << ','
         << detail::num(v.key.dt) << ',' << c.observable << ',' << c.n << ',' << detail::num(c.value) << ','
         << detail::num(c.value_sd) << ',' << c.n_ref << ',' << detail::num(c.ref) << ',' << detail::num(c.ref_sd)
         << ',' << c.n_pairs << ',' << detail::num(c.paired ? c.diff : c.error_rate) << ','

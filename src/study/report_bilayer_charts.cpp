@@ -17,11 +17,13 @@ using detail::Line;
 std::vector<const VariantReport*> of_distribution(const Analysis& a, const std::string& dist) {
   std::vector<const VariantReport*> out;
   for (const auto& v : a.variants)
-    if (v.key.distribution == dist && !v.cells.empty()) out.push_back(&v);
+    if (v.key.noise() == dist && !v.cells.empty()) out.push_back(&v);
   return out;
 }
 
-std::string title_of(const VariantReport& v) { return v.key.label() + (v.key.reference ? "" : " " + v.key.seeding); }
+std::string title_of(const VariantReport& v) {
+  return v.key.label() + (v.key.reference ? "" : " " + v.key.seeding_name());
+}
 
 // One colour per generator, one dash pattern per bead type: the reference thick and black.
 Chart profiles(const std::vector<const VariantReport*>& vs, const std::string& dist) {
@@ -74,7 +76,7 @@ Chart observable(const std::vector<const VariantReport*>& vs, const BilayerObser
 std::vector<std::string> write_bilayer_charts(const Analysis& a, const fs::path& dir, std::ostream* log) {
   std::vector<std::string> dists;
   for (const auto& v : a.variants)
-    if (std::find(dists.begin(), dists.end(), v.key.distribution) == dists.end()) dists.push_back(v.key.distribution);
+    if (std::find(dists.begin(), dists.end(), v.key.noise()) == dists.end()) dists.push_back(v.key.noise());
   std::vector<Chart> charts;
   for (const auto& d : dists) {
     const auto vs = of_distribution(a, d);
