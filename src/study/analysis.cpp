@@ -214,6 +214,12 @@ std::string VariantKey::label() const {
   return rng::describe(rng::GeneratorSpec{generator, rounds, rng::kPaperTeaKey});
 }
 
+std::string VariantKey::label_and_seeding() const {
+  std::string s = label();
+  if (!reference) s.append(" ").append(seeding_name());
+  return s;
+}
+
 std::string VariantKey::noise() const { return noise_name(distribution, feed); }
 std::string VariantKey::seeding_name() const { return study::seeding_name(seeding, reference); }
 

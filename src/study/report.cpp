@@ -162,7 +162,7 @@ std::string correlation_markdown(const Analysis& a) {
         }
       return std::string("–");
     };
-    o << "| " << v.key.label() << (v.key.reference ? "" : " " + v.key.seeding_name()) << " | " << v.key.noise() << " | "
+    o << "| " << v.key.label_and_seeding() << " | " << v.key.noise() << " | "
       << cell("pair") << " | " << cell("time") << " |\n";
   }
   return any ? o.str() : "(no correlation taps stored)\n";

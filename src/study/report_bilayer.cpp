@@ -18,10 +18,6 @@ std::string with_ci(const ReplicaMean& m) {
   return fmt("%.4f", m.mean) + " ± " + fmt("%.4f", m.ci95) + (m.from_run_sem ? "†" : "");
 }
 
-std::string row_label(const VariantReport& v) {
-  return v.key.label() + (v.key.reference ? "" : " " + v.key.seeding_name());
-}
-
 const char* label_of(const std::string& observable) {
   for (const auto& o : bilayer_observables())
     if (observable == o.name) return o.label;
@@ -42,7 +38,7 @@ std::string bilayer_table_markdown(const Analysis& a, const std::string& distrib
   o << '\n';
   for (const auto& v : a.variants) {
     if (v.key.noise() != distribution) continue;
-    o << "| " << row_label(v) << " | " << v.cells.size() << (v.broken.empty() ? "" : " (+" + std::to_string(v.broken.size()) + " broken)")
+    o << "| " << v.key.label_and_seeding() << " | " << v.cells.size() << (v.broken.empty() ? "" : " (+" + std::to_string(v.broken.size()) + " broken)")
       << " |";
     for (const auto& b : bilayer_observables())
       o << ' ' << with_ci(replica_mean(v.cells, std::string(b.name) + "_mean", std::string(b.name) + "_sem")) << " |";
@@ -78,17 +74,17 @@ std::string bilayer_differences_markdown(const Analysis& a, const std::string& d
       const std::string b = c.decision.differs ? "**" : "";
       const std::string corrected = c.decision.tested() ? fmt("%.2g", c.decision.p_adjusted) : "–";
       if (!c.available) {
-        o << "| " << row_label(v) << " | " << label_of(c.observable) << " | – | – | – | – | – | " << c.note << " |\n";
+        o << "| " << v.key.label_and_seeding() << " | " << label_of(c.observable) << " | – | – | – | – | – | " << c.note << " |\n";
         continue;
       }
       if (!c.paired) {
         any_curve = true;
-        curves << "| " << row_label(v) << " | " << label_of(c.observable) << " | " << b << fmt("%.2e", c.error_rate)
+        curves << "| " << v.key.label_and_seeding() << " | " << label_of(c.observable) << " | " << b << fmt("%.2e", c.error_rate)
                << b << " | " << fmt("%.2f", c.statistic) << " (" << fmt("%.1f", c.dof) << ") | "
                << fmt("%.2g", c.decision.p) << " | " << corrected << " |\n";
         continue;
       }
-      o << "| " << row_label(v) << " | " << label_of(c.observable) << " | " << fmt("%.4f", c.value) << " | "
+      o << "| " << v.key.label_and_seeding() << " | " << label_of(c.observable) << " | " << fmt("%.4f", c.value) << " | "
         << fmt("%.4f", c.ref) << " | " << b << fmt("%+.4f", c.diff) << b << " [± " << fmt("%.4f", c.diff_ci) << "] | "
         << fmt("%.4f", c.sigma) << " | " << fmt("%.2g", c.decision.p) << " | " << corrected << " |\n";
     }

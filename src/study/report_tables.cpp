@@ -77,7 +77,7 @@ std::string pass_table_markdown(const Analysis& a, const std::string& distributi
     for (const auto& s : streams_of(v)) {
       const auto* c = find_pass(v, "chi2", s);
       const auto* t = find_pass(v, "ttest", s);
-      o << "| " << v.key.label() << (v.key.reference ? "" : " " + v.key.seeding_name()) << " | "
+      o << "| " << v.key.label_and_seeding() << " | "
         << (s == "x" ? "" : s) << " | " << (c ? pass_cell(*c) : "–") << " | " << (t ? pass_cell(*t) : "–")
         << " |\n";
     }

@@ -26,6 +26,8 @@ struct VariantKey {
   std::string integrator;  // Cell::integrator: empty unless the sweep names integrators
 
   std::string label() const;  // "tea32(1)"
+  // The label with the seeding: "tea32(1) distance"; the reference's label alone.
+  std::string label_and_seeding() const;
   std::string noise() const;         // noise_name(distribution, feed)
   std::string seeding_name() const;  // "stream" for the reference
   auto operator<=>(const VariantKey&) const = default;
