@@ -14,7 +14,7 @@ namespace dpdrng::study::config_text {
 struct GeneratorText {
   std::string name = "tea32";
   std::string rounds = "[1, 8]";
-  std::string extra;
+  std::string extra{};
 };
 
 // A study config as TOML text: the skeleton every study test shares, with the fields they vary. Values are
@@ -22,9 +22,9 @@ struct GeneratorText {
 struct StudyText {
   std::string name = "t";
   int replicas = 2;
-  std::string study_extra;
+  std::string study_extra{};
   std::string distributions = R"(["gauss"])";
-  std::string sweep_extra;
+  std::string sweep_extra{};
   std::vector<GeneratorText> generators{GeneratorText{}};
   std::string scene = "particles = 32\nsteps = 100\nequilibrate = 10\n";
   std::string tests = "ttest_pairs = 4\n";  // empty: no [tests] section
