@@ -270,7 +270,8 @@ TEST(StudyAnalysis, MissingReferenceGivesNoVerdict) {
 
 TEST(StudyReport, NistLayoutFollowsTheReference) {
   VariantReport v;
-  v.key = VariantKey{"tea32", 1, rng::Distribution::gauss, rng::Feed::halves, rng::Seeding::distance, 0.04, false};
+  v.key = VariantKey{"tea32", 1, rng::Distribution::gauss, rng::Feed::halves, rng::Seeding::distance, 0.04,
+                     false, ""};
   v.nist_cell = "tea32-r01";
   NistRow r;
   r.test = "Frequency";
