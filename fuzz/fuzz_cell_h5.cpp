@@ -101,8 +101,9 @@ study::CellResult record(FuzzedDataProvider& in) {
   study::CellResult r;
   r.cell.generator = word(in, 12);
   r.cell.rounds = in.ConsumeIntegralInRange(0, 64);
-  r.cell.distribution = word(in, 8);
-  r.cell.seeding = word(in, 10);
+  r.cell.distribution = in.PickValueInArray({rng::Distribution::gauss, rng::Distribution::uniform});
+  r.cell.feed = in.PickValueInArray(rng::kFeeds);
+  r.cell.seeding = in.PickValueInArray({rng::Seeding::distance, rng::Seeding::pair_step});
   r.cell.dt = in.ConsumeFloatingPointInRange(1e-6, 1.0);
   r.cell.replica = in.ConsumeIntegralInRange(0, 99);
   r.cell.reference = in.ConsumeBool();
@@ -151,7 +152,8 @@ void round_trip(const std::uint8_t* data, std::size_t size) {
   require(cells.size() == 1, "a saved cell was not read back");
   const study::CellResult& b = cells.front();
   require(b.cell.id() == r.cell.id() && b.cell.generator == r.cell.generator && b.cell.rounds == r.cell.rounds &&
-              b.cell.distribution == r.cell.distribution && b.cell.seeding == r.cell.seeding &&
+              b.cell.distribution == r.cell.distribution && b.cell.feed == r.cell.feed &&
+              b.cell.seeding_name() == r.cell.seeding_name() &&
               same(b.cell.dt, r.cell.dt) && b.cell.replica == r.cell.replica &&
               b.cell.reference == r.cell.reference && b.cell.nist == r.cell.nist && b.cell.seed == r.cell.seed,
           "the cell's description changed on the way");

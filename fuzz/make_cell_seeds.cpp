@@ -23,8 +23,8 @@ int main(int argc, char** argv) {
   CellResult r;
   r.cell.generator = "tea32";
   r.cell.rounds = 1;
-  r.cell.distribution = "gauss";
-  r.cell.seeding = "distance";
+  r.cell.distribution = dpdrng::rng::Distribution::gauss;
+  r.cell.seeding = dpdrng::rng::Seeding::distance;
   r.cell.seed = 12345;
   r.seconds = 1.5;
   r.scalars = {{"temperature_mean", 1.02}, {"chi2.x.fraction", 0.99}, {"steps_done", 100}};

@@ -88,7 +88,7 @@ void progress(const std::string& what) {
 
 dpd::Timings run_once(const Case& k) {
   const dpd::RunResult res = dpd::run_water(k.cfg);
-  if (!res.ok()) throw std::runtime_error(k.label + ": " + res.status);
+  if (!res.ok()) throw std::runtime_error(k.label + ": " + res.status.text());
   return res.timings;
 }
 

@@ -11,6 +11,7 @@
 #include "dpdrng/dpd/bilayer_observables.hpp"
 #include "dpdrng/dpd/integrator.hpp"
 #include "dpdrng/dpd/pair_forces.hpp"
+#include "run_check.hpp"
 
 namespace dpdrng::dpd {
 
@@ -35,27 +36,15 @@ WaterConfig pair_config(const BilayerConfig& c, std::uint64_t seed) {
   return w;
 }
 
-std::string unstable(std::int64_t step, const std::string& why) {
-  return "unstable at step " + std::to_string(step) + ": " + why;
-}
-
-std::string check(const BilayerConfig& cfg, std::int64_t step, double T, const ForceSums& f, double max_bond) {
-  std::ostringstream why;
-  if (!std::isfinite(T) || !std::isfinite(f.virial[0] + f.virial[1] + f.virial[2]))
-    return unstable(step, "non-finite velocities or forces");
-  if (T > cfg.max_temperature * cfg.kT) {
-    why << "temperature runaway (k_BT = " << T << " > " << cfg.max_temperature << " x " << cfg.kT << ")";
-    return unstable(step, why.str());
-  }
-  if (f.min_r2 < cfg.min_distance * cfg.min_distance) {
-    why << "beads closer than " << cfg.min_distance << " (r = " << std::sqrt(f.min_r2) << ")";
-    return unstable(step, why.str());
-  }
+// detail::check_state, then the bonds.
+RunStatus check(const BilayerConfig& cfg, std::int64_t step, double T, const ForceSums& f, double max_bond) {
+  if (RunStatus s = detail::check_state(cfg, step, T, f); !s.ok()) return s;
   if (!(max_bond <= cfg.max_bond)) {
+    std::ostringstream why;
     why << "bond stretched to " << max_bond << " > " << cfg.max_bond;
-    return unstable(step, why.str());
+    return RunStatus::unstable(step, why.str());
   }
-  return "";
+  return {};
 }
 
 double tension_of(const std::array<double, 3>& P, double Lz) { return Lz * (P[2] - 0.5 * (P[0] + P[1])); }
@@ -122,7 +111,7 @@ BilayerResult run_bilayer(const BilayerConfig& in, const RunHooks& hooks) {
   std::vector<double> T_s, Pd_s[3], P_s, ten_s, tenc_s, ten_nobond_s, ten_nobend_s, sep_s, order_s;
   std::array<double, kTailLength - 1> order_sum{};
   std::size_t order_n = 0;
-  std::string disrupted;
+  RunStatus disrupted;
 
   const auto t_start = Clock::now();
   ForceSums f = (cfg.warmup > 0 ? vv_warm : vv_main).start(s, cfg.warmup > 0 ? force_warm : force_main);
@@ -140,8 +129,8 @@ BilayerResult run_bilayer(const BilayerConfig& in, const RunHooks& hooks) {
     const double T = (kin[0] + kin[1] + kin[2]) / (3.0 * n - 3.0);
     const auto p = s.momentum();
     r.momentum_drift = std::max(r.momentum_drift, std::hypot(p[0] - p0[0], p[1] - p0[1], p[2] - p0[2]) / n);
-    if (std::string why = check(cfg, step, T, f, last_bonded.max_bond); !why.empty()) {
-      r.status = why;
+    if (RunStatus why = check(cfg, step, T, f, last_bonded.max_bond); !why.ok()) {
+      r.status = std::move(why);
       break;
     }
 
@@ -167,9 +156,8 @@ BilayerResult run_bilayer(const BilayerConfig& in, const RunHooks& hooks) {
       const double zmid = bilayer_midplane(s, st.lipids);
       const int out = lipids_out(s, st.lipids, zmid, cfg.escape_distance);
       r.lipids_out_max = std::max(r.lipids_out_max, out);
-      if (out > 0 && disrupted.empty())
-        disrupted = "disrupted at step " + std::to_string(step) + ": " + std::to_string(out) +
-                    " lipid(s) left the bilayer";
+      if (out > 0 && disrupted.ok())
+        disrupted = RunStatus::disrupted(step, std::to_string(out) + " lipid(s) left the bilayer");
       const TailOrder order = tail_order(s, st.lipids);
       if (prod) {
         const std::int64_t k = (step - cfg.equilibrate - 1) / cfg.sample_every;
@@ -190,7 +178,7 @@ BilayerResult run_bilayer(const BilayerConfig& in, const RunHooks& hooks) {
     }
     if (hooks.progress && step % progress_every == 0) hooks.progress(step, cfg.steps);
   }
-  if (r.ok()) r.status = disrupted.empty() ? "ok" : disrupted;
+  if (r.ok()) r.status = disrupted;
   const double total = seconds(t_start, Clock::now());
 
   r.momentum_final = s.momentum();

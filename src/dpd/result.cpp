@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ostream>
 
 namespace dpdrng::dpd {
 
@@ -71,6 +72,14 @@ Stat make_stat(const std::vector<double>& x) {
   s.std_sem_dof = n / double(2 * ay.window + 1);
   return s;
 }
+
+std::string RunStatus::text() const {
+  if (state == RunState::ok) return "ok";
+  return std::string(state == RunState::unstable ? "unstable" : "disrupted") + " at step " + std::to_string(step) +
+         ": " + detail;
+}
+
+std::ostream& operator<<(std::ostream& o, const RunStatus& s) { return o << s.text(); }
 
 nlohmann::json to_json(const Stat& s) {
   return {{"mean", s.mean},       {"std", s.std},         {"sem", s.sem},

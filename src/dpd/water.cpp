@@ -9,6 +9,7 @@
 
 #include "dpdrng/dpd/observables.hpp"
 #include "dpdrng/dpd/shardlow.hpp"
+#include "run_check.hpp"
 
 namespace dpdrng::dpd {
 
@@ -21,26 +22,6 @@ double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::d
 struct Samples {
   std::vector<double> T, P, Pc, Pd[3], Pcd[3];
 };
-
-std::string unstable(std::int64_t step, const std::string& why) {
-  return "unstable at step " + std::to_string(step) + ": " + why;
-}
-
-// The first reason the state at `step` cannot go on as a simulation, or "".
-std::string check(const WaterConfig& cfg, std::int64_t step, double T, const ForceSums& f) {
-  std::ostringstream why;
-  if (!std::isfinite(T) || !std::isfinite(f.virial[0] + f.virial[1] + f.virial[2]))
-    return unstable(step, "non-finite velocities or forces");
-  if (T > cfg.max_temperature * cfg.kT) {
-    why << "temperature runaway (k_BT = " << T << " > " << cfg.max_temperature << " x " << cfg.kT << ")";
-    return unstable(step, why.str());
-  }
-  if (f.min_r2 < cfg.min_distance * cfg.min_distance) {
-    why << "beads closer than " << cfg.min_distance << " (r = " << std::sqrt(f.min_r2) << ")";
-    return unstable(step, why.str());
-  }
-  return "";
-}
 
 }  // namespace
 
@@ -132,8 +113,8 @@ RunResult run_water(const WaterConfig& in, const RunHooks& hooks) {
       r.series.temperature.push_back(T), r.series.pressure.push_back(P), r.series.pressure_conservative.push_back(Pc);
       r.series.px.push_back(p[0]), r.series.py.push_back(p[1]), r.series.pz.push_back(p[2]);
     }
-    if (std::string why = check(cfg, step, T, f); !why.empty()) {
-      r.status = why;
+    if (RunStatus why = detail::check_state(cfg, step, T, f); !why.ok()) {
+      r.status = std::move(why);
       break;
     }
     if (step > cfg.equilibrate) {

@@ -214,8 +214,19 @@ std::string VariantKey::label() const {
   return rng::describe(rng::GeneratorSpec{generator, rounds, rng::kPaperTeaKey});
 }
 
+std::string VariantKey::label_and_seeding() const {
+  std::string s = label();
+  if (!reference) s.append(" ").append(seeding_name());
+  return s;
+}
+
+std::string VariantKey::noise() const { return noise_name(distribution, feed); }
+std::string VariantKey::seeding_name() const { return study::seeding_name(seeding, reference); }
+
 VariantKey variant_of(const Cell& c) {
-  return {c.generator, c.rounds, c.noise(), c.seeding, c.dt, c.reference, c.feed, c.integrator};
+  // The reference's seeding is not part of its variant: it draws from its stream.
+  const rng::Seeding seeding = c.reference ? rng::Seeding::distance : c.seeding;
+  return {c.generator, c.rounds, c.distribution, c.feed, seeding, c.dt, c.reference, c.integrator};
 }
 
 double curve_error(const std::vector<double>& curve, const std::vector<double>& ref, double threshold) {
@@ -265,7 +276,7 @@ ReplicaMean replica_mean(const std::vector<const CellResult*>& cells, const std:
 
 const VariantReport* Analysis::reference_for(const VariantKey& k) const {
   for (const auto& v : variants)
-    if (v.key.reference && v.key.distribution == k.distribution && v.key.dt == k.dt &&
+    if (v.key.reference && v.key.distribution == k.distribution && v.key.feed == k.feed && v.key.dt == k.dt &&
         v.key.integrator == k.integrator)
       return &v;
   return nullptr;

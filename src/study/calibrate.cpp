@@ -179,8 +179,8 @@ nlohmann::json calibration_key(const StudyConfig& config) {
   nlohmann::json scene = c["scene"];
   scene["dt"] = config.scene.dt.front();
   return {{"scene", scene},
-          {"distribution", config.distributions.front()},
-          {"seeding", config.seedings.front()},
+          {"distribution", rng::to_string(config.distributions.front())},
+          {"seeding", rng::to_string(config.seedings.front())},
           {"alpha", config.tests.alpha},
           {"error_control", to_string(config.tests.error_control)},
           {"chi2_steps", config.tests.chi2_steps},
@@ -209,7 +209,7 @@ StudyConfig calibration_pool(const StudyConfig& config, const CalibrationPlan& p
   for (const auto& d : defects_of(plan)) {
     GeneratorEntry e{d.name(), {1}, {}};
     rng::validated({e.name, 0});  // InputError for an out-of-range size
-    if (d.kind == "lag1") e.seedings = {"pair-step"};  // the step must be in the hash input
+    if (d.kind == "lag1") e.seedings = {rng::Seeding::pair_step};  // the step must be in the hash input
     p.generators.push_back(e);
   }
   p.replicas = std::max(plan.null_studies * config.replicas, defect_replicas(config, plan));

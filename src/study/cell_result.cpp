@@ -37,6 +37,14 @@ T get(const std::map<std::string, h5::Attribute>& a, const std::string& name) {
   throw std::runtime_error("cell record attribute " + name + " has the wrong type");
 }
 
+// "stream" belongs to the reference and only to it; a hash cell names its pair seeding.
+rng::Seeding read_seeding(const std::string& text, bool reference) {
+  if (reference != (text == "stream"))
+    throw std::runtime_error("cell record has seeding '" + text + "' for a " +
+                             (reference ? "reference" : "hash") + " cell");
+  return reference ? rng::Seeding::distance : rng::parse_seeding(text);
+}
+
 }  // namespace
 
 std::string_view to_string(CellStatus s) {
@@ -60,9 +68,9 @@ void write_cell(hid_t g, const CellResult& r) {
   h5::write_attribute(g, "cell.id", c.id());
   h5::write_attribute(g, "cell.generator", c.generator);
   h5::write_attribute(g, "cell.rounds", std::int64_t{c.rounds});
-  h5::write_attribute(g, "cell.distribution", c.distribution);
-  h5::write_attribute(g, "cell.feed", c.feed);
-  h5::write_attribute(g, "cell.seeding", c.seeding);
+  h5::write_attribute(g, "cell.distribution", std::string(rng::to_string(c.distribution)));
+  h5::write_attribute(g, "cell.feed", std::string(rng::to_string(c.feed)));
+  h5::write_attribute(g, "cell.seeding", c.seeding_name());
   h5::write_attribute(g, "cell.dt", c.dt);
   // Only when the sweep names one: cells of studies without the factor keep their records byte for byte.
   if (!c.integrator.empty()) h5::write_attribute(g, "cell.integrator", c.integrator);
@@ -94,13 +102,14 @@ CellResult read_cell(hid_t g) {
   Cell& c = r.cell;
   c.generator = get<std::string>(a, "cell.generator");
   c.rounds = static_cast<int>(get<std::int64_t>(a, "cell.rounds"));
-  c.distribution = get<std::string>(a, "cell.distribution");
-  if (a.count("cell.feed")) c.feed = get<std::string>(a, "cell.feed");  // absent in stores older than the feed
-  c.seeding = get<std::string>(a, "cell.seeding");
+  c.distribution = rng::parse_distribution(get<std::string>(a, "cell.distribution"));
+  // A store written without the feed holds halves cells.
+  if (a.count("cell.feed")) c.feed = rng::parse_feed(get<std::string>(a, "cell.feed"));
   c.dt = get<double>(a, "cell.dt");
   if (a.count("cell.integrator")) c.integrator = get<std::string>(a, "cell.integrator");
   c.replica = static_cast<int>(get<std::int64_t>(a, "cell.replica"));
   c.reference = get<std::int64_t>(a, "cell.reference") != 0;
+  c.seeding = read_seeding(get<std::string>(a, "cell.seeding"), c.reference);
   c.nist = get<std::int64_t>(a, "cell.nist") != 0;
   c.seed = parse_number<std::uint64_t>(get<std::string>(a, "cell.seed"), "cell.seed");
   r.status = parse_cell_status(get<std::string>(a, "status"));

@@ -17,30 +17,41 @@
 namespace dpdrng::study {
 namespace {
 
-void check_unique(Section& s, const std::string& key, std::vector<std::string> v) {
+template <class T>
+void check_unique(Section& s, const std::string& key, std::vector<T> v) {
   std::sort(v.begin(), v.end());
   if (std::adjacent_find(v.begin(), v.end()) != v.end()) s.fail(key, "lists a value twice");
 }
 
-std::vector<std::string> valid_distributions(Section& s, const std::string& key, std::vector<std::string> v) {
-  for (const auto& d : v) try {
-      rng::parse_distribution(d);
-    } catch (const InputError& e) {
-      s.fail(key, e.what());
-    }
-  check_unique(s, key, v);
-  return v;
+template <class E>
+std::vector<std::string> names_of(const std::vector<E>& v) {
+  std::vector<std::string> out;
+  for (E e : v) out.emplace_back(rng::to_string(e));
+  return out;
 }
 
-std::vector<std::string> valid_feeds(Section& s, const std::string& key, std::vector<std::string> v) {
-  if (v.empty()) s.fail(key, "needs at least one feed");
-  for (const auto& f : v) try {
-      rng::parse_feed(f);
+// Each name through `parse`, whose InputError becomes the key's; a name listed twice is refused.
+template <class Parse>
+auto parsed_list(Section& s, const std::string& key, const std::vector<std::string>& names, Parse parse) {
+  std::vector<decltype(parse(std::string_view{}))> out;
+  for (const auto& name : names) try {
+      out.push_back(parse(name));
     } catch (const InputError& e) {
       s.fail(key, e.what());
     }
-  check_unique(s, key, v);
-  return v;
+  check_unique(s, key, out);
+  return out;
+}
+
+std::vector<rng::Distribution> valid_distributions(Section& s, const std::string& key,
+                                                   const std::vector<rng::Distribution>& def) {
+  return parsed_list(s, key, s.strings(key, names_of(def)), rng::parse_distribution);
+}
+
+std::vector<rng::Feed> valid_feeds(Section& s, const std::string& key, const std::vector<rng::Feed>& def) {
+  const std::vector<std::string> names = s.strings(key, names_of(def));
+  if (names.empty()) s.fail(key, "needs at least one feed");
+  return parsed_list(s, key, names, rng::parse_feed);
 }
 
 std::vector<std::string> valid_integrators(Section& s, const std::string& key, std::vector<std::string> v) {
@@ -54,18 +65,12 @@ std::vector<std::string> valid_integrators(Section& s, const std::string& key, s
   return v;
 }
 
-std::vector<std::string> valid_seedings(Section& s, const std::string& key, std::vector<std::string> v) {
-  for (const auto& name : v) {
-    rng::Seeding seeding;
-    try {
-      seeding = rng::parse_seeding(name);
-    } catch (const InputError& e) {
-      s.fail(key, e.what());
-    }
-    if (seeding == rng::Seeding::counter) s.fail(key, "'counter' makes standalone streams, not pair noise");
-  }
-  check_unique(s, key, v);
-  return v;
+std::vector<rng::Seeding> valid_seedings(Section& s, const std::string& key, const std::vector<rng::Seeding>& def) {
+  return parsed_list(s, key, s.strings(key, names_of(def)), [](std::string_view name) {
+    const rng::Seeding seeding = rng::parse_seeding(name);
+    if (seeding == rng::Seeding::counter) throw InputError("'counter' makes standalone streams, not pair noise");
+    return seeding;
+  });
 }
 
 const rng::GeneratorInfo& known_generator(Section& s, const std::string& key, const std::string& name) {
@@ -90,7 +95,7 @@ SceneParams bilayer_scene_defaults() {
   s.dt = {b.dt};
   s.steps = b.steps;
   s.equilibrate = b.equilibrate;
-  s.pairs = std::string(dpd::to_string(b.pairs));
+  s.pairs = b.pairs;
   return s;
 }
 
@@ -137,29 +142,30 @@ nlohmann::json StudyConfig::canonical() const {
   nlohmann::json scene_json = {{"name", scene.name},   {"particles", scene.particles}, {"density", scene.density},
                                {"gamma", scene.gamma}, {"kT", scene.kT},               {"lambda", scene.lambda},
                                {"dt", scene.dt},       {"steps", scene.steps},         {"equilibrate", scene.equilibrate},
-                               {"pairs", scene.pairs}};
+                               {"pairs", dpd::to_string(scene.pairs)}};
   if (!scene.is_bilayer()) scene_json["a"] = scene.a;  // the bilayer's a_ij are fixed by the scene
   nlohmann::json gens = nlohmann::json::array();
-  for (const auto& g : generators) gens.push_back({{"name", g.name}, {"rounds", g.rounds}, {"seedings", g.seedings}});
+  for (const auto& g : generators)
+    gens.push_back({{"name", g.name}, {"rounds", g.rounds}, {"seedings", names_of(g.seedings)}});
   nlohmann::json j = {
       {"name", name},
       {"reference", reference},
       {"replicas", replicas},
       {"seed", seed},
       {"generators", gens},
-      {"distributions", distributions},
-      {"seedings", seedings},
+      {"distributions", names_of(distributions)},
+      {"seedings", names_of(seedings)},
       {"scene", scene_json},
       {"tests",
        {{"alpha", tests.alpha}, {"chi2_steps", tests.chi2_steps}, {"ttest_pairs", tests.ttest_pairs},
         {"nist_sequences", tests.nist_sequences}, {"nist_bits", tests.nist_bits},
-        {"nist_generators", tests.nist_generators}, {"nist_distributions", tests.nist_distributions},
+        {"nist_generators", tests.nist_generators}, {"nist_distributions", names_of(tests.nist_distributions)},
         {"nist_replicas", tests.nist_replicas}}},
       {"cost", {{"numbers", cost.numbers}}},
   };
-  // Present only when it is not the default, so that configs written before the key keep their hash.
+  // Present only when it is not the default, so that configs without the key keep their hash.
   if (tests.error_control != ErrorControl::study) j["tests"]["error_control"] = to_string(tests.error_control);
-  if (feeds != std::vector<std::string>{"halves"}) j["feeds"] = feeds;
+  if (feeds != std::vector<rng::Feed>{rng::Feed::halves}) j["feeds"] = names_of(feeds);
   if (!integrators.empty()) j["integrators"] = integrators;
   if (scene.time > 0) j["scene"]["time"] = scene.time, j["scene"]["equilibrate_time"] = scene.equilibrate_time;
   return j;
@@ -189,9 +195,9 @@ StudyConfig parse_config(const std::string& toml_text, const std::string& origin
   st.finish();
 
   Section sw = top.sub("sweep");
-  c.distributions = valid_distributions(sw, "distributions", sw.strings("distributions", c.distributions));
-  c.seedings = valid_seedings(sw, "seedings", sw.strings("seedings", c.seedings));
-  c.feeds = valid_feeds(sw, "feeds", sw.strings("feeds", c.feeds));
+  c.distributions = valid_distributions(sw, "distributions", c.distributions);
+  c.seedings = valid_seedings(sw, "seedings", c.seedings);
+  c.feeds = valid_feeds(sw, "feeds", c.feeds);
   if (sw.get("integrators")) c.integrators = valid_integrators(sw, "integrators", sw.strings("integrators", {}));
   const toml::array* gens = sw.array_of_tables("generator");
   if (!gens || gens->empty()) sw.fail("generator", "at least one [[sweep.generator]] is required");
@@ -215,7 +221,7 @@ StudyConfig parse_config(const std::string& toml_text, const std::string& origin
       e.rounds.push_back(static_cast<int>(r));
     }
     if (e.rounds.empty()) e.rounds.push_back(rng::validated(rng::GeneratorSpec{e.name, 0, rng::kPaperTeaKey}).rounds);
-    if (g.get("seedings")) e.seedings = valid_seedings(g, "seedings", g.strings("seedings", {}));
+    if (g.get("seedings")) e.seedings = valid_seedings(g, "seedings", {});
     g.finish();
     for (const auto& prev : c.generators)
       if (prev.name == e.name) g.fail("name", "'" + e.name + "' appears twice; list all its rounds in one entry");
@@ -263,8 +269,9 @@ StudyConfig parse_config(const std::string& toml_text, const std::string& origin
     s.equilibrate = sc.integer("equilibrate", s.equilibrate, 0, 1'000'000'000);
     if (s.equilibrate >= s.steps) sc.fail("equilibrate", "must be less than scene.steps");
   }
-  s.pairs = sc.str("pairs", s.pairs);
-  if (s.pairs != "all" && s.pairs != "cells") sc.fail("pairs", "must be 'all' or 'cells'");
+  const std::string pair_mode = sc.str("pairs", std::string(dpd::to_string(s.pairs)));
+  if (pair_mode != "all" && pair_mode != "cells") sc.fail("pairs", "must be 'all' or 'cells'");
+  s.pairs = dpd::parse_pair_mode(pair_mode);
   sc.finish();
   if (bilayer && !c.integrators.empty())
     throw InputError(origin + ": sweep.integrators: the bilayer scene runs MVV at its lambda only (remove the key)");
@@ -301,8 +308,7 @@ StudyConfig parse_config(const std::string& toml_text, const std::string& origin
                                                         [&](const GeneratorEntry& e) { return e.name == g; });
     if (!known) te.fail("nist_generators", "'" + g + "' is not swept by this study");
   }
-  t.nist_distributions = valid_distributions(te, "nist_distributions", te.strings("nist_distributions",
-                                                                                  t.nist_distributions));
+  t.nist_distributions = valid_distributions(te, "nist_distributions", t.nist_distributions);
   t.nist_replicas = static_cast<int>(te.integer("nist_replicas", t.nist_replicas, 0, c.replicas));
   if (bilayer) {
     const char* why = "must be 0 for the bilayer scene: its cells tap no raw numbers (the water scene tests the "

@@ -81,10 +81,6 @@ struct Tapper {
   }
 };
 
-std::string unstable(std::int64_t step, const std::string& why) {
-  return "unstable at step " + std::to_string(step) + ": " + why;
-}
-
 DecompRun run_one(const DecompConfig& cfg, const DomainGrid& grid, BoundaryStats* first, Tapper* tap) {
   const WaterConfig& w = cfg.water;
   const std::size_t n = static_cast<std::size_t>(w.particles);
@@ -129,11 +125,11 @@ DecompRun run_one(const DecompConfig& cfg, const DomainGrid& grid, BoundaryStats
     const auto p = s.momentum();
     r.momentum_drift = std::max(r.momentum_drift, std::hypot(p[0] - p0[0], p[1] - p0[1], p[2] - p0[2]) / n);
     if (!std::isfinite(temp) || temp > w.max_temperature * w.kT) {
-      r.status = unstable(step, "temperature runaway or non-finite velocities");
+      r.status = dpd::RunStatus::unstable(step, "temperature runaway or non-finite velocities");
       break;
     }
     if (f.min_r2 < w.min_distance * w.min_distance) {
-      r.status = unstable(step, "beads closer than min_distance");
+      r.status = dpd::RunStatus::unstable(step, "beads closer than min_distance");
       break;
     }
     if (step <= w.equilibrate) continue;
@@ -210,7 +206,7 @@ namespace {
 nlohmann::json stat_json(const Stat& s) { return {{"mean", s.mean}, {"std", s.std}, {"sem", s.sem}, {"n", s.n}}; }
 
 nlohmann::json run_json(const DecompRun& r) {
-  return {{"status", r.status},
+  return {{"status", r.status.text()},
           {"steps_done", r.steps_done},
           {"temperature", stat_json(r.temperature)},
           {"pressure", stat_json(r.pressure)},

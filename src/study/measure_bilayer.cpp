@@ -16,14 +16,6 @@ void put(CellResult& out, const std::string& name, const dpd::Stat& s) {
   out.scalars[name + "_sem_dof"] = s.sem_dof;
 }
 
-// "disrupted at step 1234: …" / "unstable at step 1234: …" → 1234 (or −1 if the text says no step).
-long step_of(const std::string& status) {
-  long step = -1;
-  const auto at = status.find(" at step ");
-  if (at != std::string::npos) std::sscanf(status.c_str() + at + 9, "%ld", &step);
-  return step;
-}
-
 }  // namespace
 
 dpd::BilayerConfig bilayer_engine_config(const Cell& cell, const StudyConfig& config, int threads) {
@@ -36,9 +28,10 @@ dpd::BilayerConfig bilayer_engine_config(const Cell& cell, const StudyConfig& co
 
 void record_bilayer(const dpd::BilayerResult& r, CellResult& out) {
   if (!r.ok()) {
-    out.status = r.status.rfind("disrupted", 0) == 0 ? CellStatus::disrupted : CellStatus::unstable;
-    out.unstable_step = out.status == CellStatus::unstable ? static_cast<long>(r.steps_done) : step_of(r.status);
-    out.reason = r.status;
+    const bool disrupted = r.status.state == dpd::RunState::disrupted;
+    out.status = disrupted ? CellStatus::disrupted : CellStatus::unstable;
+    out.unstable_step = static_cast<long>(disrupted ? r.status.step : r.steps_done);
+    out.reason = r.status.text();
   }
   auto& sc = out.scalars;
   sc["steps_done"] = double(r.steps_done);

@@ -24,11 +24,11 @@ void set_run(EngineConfig& c, const Cell& cell, const SceneParams& s, int thread
   c.dt = cell.dt;
   c.steps = s.steps_at(cell.dt);
   c.equilibrate = s.equilibrate_at(cell.dt);
-  c.pairs = dpd::parse_pair_mode(s.pairs);
+  c.pairs = s.pairs;
   c.generator = rng::validated(rng::GeneratorSpec{cell.generator, cell.rounds, rng::kPaperTeaKey});
-  c.seeding = cell.reference ? rng::Seeding::distance : rng::parse_seeding(cell.seeding);  // ignored by a stream
-  c.distribution = rng::parse_distribution(cell.distribution);
-  c.feed = rng::parse_feed(cell.feed);
+  c.seeding = cell.seeding;  // ignored by a stream
+  c.distribution = cell.distribution;
+  c.feed = cell.feed;
   c.seed = cell.seed;
   // The same initial state for every generator of a replica: differences between generators are then not
   // diluted by different starting points (paired comparison).

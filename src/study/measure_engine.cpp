@@ -25,7 +25,7 @@ TapPlan plan_taps(const Cell& cell, const StudyConfig& config, int words_per_pai
   if (cell.nist) {
     // Every pair draws every step only in `all` mode; in `cells` mode the count varies, so tap generously.
     const std::int64_t pairs = std::int64_t(s.particles) * (s.particles - 1) / 2;
-    const std::int64_t per_step = (s.pairs == "all" ? pairs : pairs / 8) * words_per_pair;
+    const std::int64_t per_step = (s.pairs == dpd::PairMode::all ? pairs : pairs / 8) * words_per_pair;
     const std::int64_t words = (t.nist_sequences * t.nist_bits + 63) / 64;
     const std::int64_t need = std::min<std::int64_t>((words + per_step - 1) / per_step, production);
     for (std::int64_t k = steps - need + 1; k <= steps; ++k) plan.nist_steps.push_back(k);
@@ -122,7 +122,7 @@ void record_run(const dpd::RunResult& r, CellResult& out) {
   if (!r.ok()) {
     out.status = CellStatus::unstable;
     out.unstable_step = static_cast<long>(r.steps_done);
-    out.reason = r.status;
+    out.reason = r.status.text();
   }
   auto& sc = out.scalars;
   sc["steps_done"] = double(r.steps_done);

@@ -61,9 +61,9 @@ void record_nist(const dpd::Taps& taps, const TapPlan& plan, const TestParams& t
   out.series["nist/ok"] = ref_ok;
   out.series["nist/ok_exact"] = ok;
   out.matrices["nist/histogram"] = std::move(hist);
-  out.strings["nist/final_analysis_report"] = {
-      stats::nist::final_analysis_report(rows, out.cell.label() + " " + out.cell.distribution + " (" + out.cell.id() + ")",
-                                         tests.alpha)};
+  const std::string title =
+      out.cell.label() + " " + std::string(rng::to_string(out.cell.distribution)) + " (" + out.cell.id() + ")";
+  out.strings["nist/final_analysis_report"] = {stats::nist::final_analysis_report(rows, title, tests.alpha)};
   out.scalars["nist.sequences"] = double(m);
   out.scalars["nist.bits"] = double(tests.nist_bits);
   out.scalars["nist.columns"] = double(rows.size());

@@ -39,7 +39,7 @@ std::string fmt(const char* f, double x) {
 std::vector<std::string> distributions_of(const Analysis& a) {
   std::vector<std::string> dists;
   for (const auto& v : a.variants)
-    if (std::find(dists.begin(), dists.end(), v.key.distribution) == dists.end()) dists.push_back(v.key.distribution);
+    if (std::find(dists.begin(), dists.end(), v.key.noise()) == dists.end()) dists.push_back(v.key.noise());
   return dists;
 }
 
@@ -53,8 +53,9 @@ std::string cells_csv(const std::vector<CellResult>& cells) {
   for (const auto& n : names) o << ',' << n;
   o << '\n';
   for (const auto& c : cells) {
-    o << c.cell.id() << ',' << c.cell.generator << ',' << c.cell.rounds << ',' << c.cell.distribution << ',' << c.cell.feed
-      << ',' << c.cell.seeding << ',' << num(c.cell.dt) << ',' << c.cell.integrator << ',' << c.cell.replica << ',' << to_string(c.status) << ','
+    o << c.cell.id() << ',' << c.cell.generator << ',' << c.cell.rounds << ',' << rng::to_string(c.cell.distribution)
+      << ',' << rng::to_string(c.cell.feed) << ',' << c.cell.seeding_name() << ',' << num(c.cell.dt) << ','
+      << c.cell.integrator << ',' << c.cell.replica << ',' << to_string(c.status) << ','
       << c.unstable_step << ',' << num(c.seconds);
     for (const auto& n : names) o << ',' << (c.has(n) ? num(c.scalar(n, NAN)) : "");
     o << '\n';
@@ -99,14 +100,14 @@ std::string report_header(const StudyConfig& config, const Analysis& a, const st
     md << "- scene: bilayer (H3(T6)2 lipids in water; box, lipids and a_ij fixed by the scene), " << s.particles
        << " beads, ρ = " << s.density << ", γ = " << s.gamma << ", k_BT = " << s.kT << ", λ = " << s.lambda << ", "
        << s.steps << " steps (" << s.equilibrate << " discarded; the first min(1000, " << s.equilibrate
-       << ") at Δt = 0.005), pairs: " << s.pairs << "\n";
+       << ") at Δt = 0.005), pairs: " << dpd::to_string(s.pairs) << "\n";
   else
     md << "- scene: " << s.name << ", " << s.particles << " beads, ρ = " << s.density << ", a = " << s.a
        << ", γ = " << s.gamma << ", k_BT = " << s.kT << ", " << integrator_text(config) << ", "
        << (s.time > 0 ? num(s.time) + " units of simulated time at every Δt (" + num(s.equilibrate_time) +
                             " discarded)"
                       : std::to_string(s.steps) + " steps (" + std::to_string(s.equilibrate) + " discarded)")
-       << ", pairs: " << s.pairs << "\n";
+       << ", pairs: " << dpd::to_string(s.pairs) << "\n";
   md << "- replicas per variant: " << config.replicas << "; reference: " << config.reference << "; α = " << a.alpha
      << "\n- "
      << (a.family_size ? a.error_control_sentence() : "Error control: none needed (no tests, no verdicts)")
@@ -173,7 +174,7 @@ std::string correlation_markdown(const Analysis& a) {
         }
       return std::string("–");
     };
-    o << "| " << v.key.label() << (v.key.reference ? "" : " " + v.key.seeding) << " | " << v.key.distribution << " | "
+    o << "| " << v.key.label_and_seeding() << " | " << v.key.noise() << " | "
       << cell("pair") << " | " << cell("time") << " |\n";
   }
   return any ? o.str() : "(no correlation taps stored)\n";
@@ -300,7 +301,7 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
         if (r.applicable > 0 && !r.ok && shown++ < 6)
           failing += (failing.empty() ? "" : ", ") + r.test + (r.variant.empty() || r.variant == "-" ? "" : " " + r.variant);
       if (shown > 6) failing += ", …";
-      md << "| " << v.key.label() << " | " << v.key.distribution << " | " << v.nist_sequences << " × "
+      md << "| " << v.key.label() << " | " << v.key.noise() << " | " << v.nist_sequences << " × "
          << config.tests.nist_bits << " | " << num(v.nist_failed) << " / " << v.nist_columns << " | "
          << (failing.empty() ? "none" : failing) << " | [nist_" << v.nist_cell << ".txt](nist_" << v.nist_cell
          << ".txt) |\n";

@@ -18,8 +18,6 @@ std::string with_ci(const ReplicaMean& m) {
   return fmt("%.4f", m.mean) + " ± " + fmt("%.4f", m.ci95) + (m.from_run_sem ? "†" : "");
 }
 
-std::string row_label(const VariantReport& v) { return v.key.label() + (v.key.reference ? "" : " " + v.key.seeding); }
-
 const char* label_of(const std::string& observable) {
   for (const auto& o : bilayer_observables())
     if (observable == o.name) return o.label;
@@ -39,8 +37,8 @@ std::string bilayer_table_markdown(const Analysis& a, const std::string& distrib
   for (std::size_t k = 0; k < bilayer_observables().size(); ++k) o << "---|";
   o << '\n';
   for (const auto& v : a.variants) {
-    if (v.key.distribution != distribution) continue;
-    o << "| " << row_label(v) << " | " << v.cells.size() << (v.broken.empty() ? "" : " (+" + std::to_string(v.broken.size()) + " broken)")
+    if (v.key.noise() != distribution) continue;
+    o << "| " << v.key.label_and_seeding() << " | " << v.cells.size() << (v.broken.empty() ? "" : " (+" + std::to_string(v.broken.size()) + " broken)")
       << " |";
     for (const auto& b : bilayer_observables())
       o << ' ' << with_ci(replica_mean(v.cells, std::string(b.name) + "_mean", std::string(b.name) + "_sem")) << " |";
@@ -55,8 +53,8 @@ std::string bilayer_table_csv(const Analysis& a) {
   for (const auto& v : a.variants)
     for (const auto& b : bilayer_observables()) {
       const ReplicaMean m = replica_mean(v.cells, std::string(b.name) + "_mean", std::string(b.name) + "_sem");
-      o << v.key.generator << ',' << v.key.rounds << ',' << v.key.distribution << ','
-        << (v.key.reference ? "stream" : v.key.seeding) << ',' << detail::num(v.key.dt) << ',' << b.name << ','
+      o << v.key.generator << ',' << v.key.rounds << ',' << v.key.noise() << ','
+        << v.key.seeding_name() << ',' << detail::num(v.key.dt) << ',' << b.name << ','
         << m.n << ',' << detail::num(m.mean) << ',' << detail::num(m.ci95) << ',' << int(m.from_run_sem) << '\n';
     }
   return o.str();
@@ -71,22 +69,22 @@ std::string bilayer_differences_markdown(const Analysis& a, const std::string& d
             "|---|---|---|---|---|---|\n";
   bool any_curve = false;
   for (const auto& v : a.variants) {
-    if (v.key.reference || v.key.distribution != distribution) continue;
+    if (v.key.reference || v.key.noise() != distribution) continue;
     for (const auto& c : v.observables) {
       const std::string b = c.decision.differs ? "**" : "";
       const std::string corrected = c.decision.tested() ? fmt("%.2g", c.decision.p_adjusted) : "–";
       if (!c.available) {
-        o << "| " << row_label(v) << " | " << label_of(c.observable) << " | – | – | – | – | – | " << c.note << " |\n";
+        o << "| " << v.key.label_and_seeding() << " | " << label_of(c.observable) << " | – | – | – | – | – | " << c.note << " |\n";
         continue;
       }
       if (!c.paired) {
         any_curve = true;
-        curves << "| " << row_label(v) << " | " << label_of(c.observable) << " | " << b << fmt("%.2e", c.error_rate)
+        curves << "| " << v.key.label_and_seeding() << " | " << label_of(c.observable) << " | " << b << fmt("%.2e", c.error_rate)
                << b << " | " << fmt("%.2f", c.statistic) << " (" << fmt("%.1f", c.dof) << ") | "
                << fmt("%.2g", c.decision.p) << " | " << corrected << " |\n";
         continue;
       }
-      o << "| " << row_label(v) << " | " << label_of(c.observable) << " | " << fmt("%.4f", c.value) << " | "
+      o << "| " << v.key.label_and_seeding() << " | " << label_of(c.observable) << " | " << fmt("%.4f", c.value) << " | "
         << fmt("%.4f", c.ref) << " | " << b << fmt("%+.4f", c.diff) << b << " [± " << fmt("%.4f", c.diff_ci) << "] | "
         << fmt("%.4f", c.sigma) << " | " << fmt("%.2g", c.decision.p) << " | " << corrected << " |\n";
     }
@@ -101,7 +99,7 @@ std::string bilayer_differences_csv(const Analysis& a) {
        "reference_sd,pairs,difference,difference_ci95,sigma,test,statistic,dof,p_value,p_adjusted,differs\n";
   for (const auto& v : a.variants)
     for (const auto& c : v.observables)
-      o << v.key.generator << ',' << v.key.rounds << ',' << v.key.distribution << ',' << v.key.seeding << ','
+      o << v.key.generator << ',' << v.key.rounds << ',' << v.key.noise() << ',' << v.key.seeding_name() << ','
         << detail::num(v.key.dt) << ',' << c.observable << ',' << c.n << ',' << detail::num(c.value) << ','
         << detail::num(c.value_sd) << ',' << c.n_ref << ',' << detail::num(c.ref) << ',' << detail::num(c.ref_sd)
         << ',' << c.n_pairs << ',' << detail::num(c.paired ? c.diff : c.error_rate) << ','

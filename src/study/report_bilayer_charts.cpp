@@ -17,11 +17,9 @@ using detail::Line;
 std::vector<const VariantReport*> of_distribution(const Analysis& a, const std::string& dist) {
   std::vector<const VariantReport*> out;
   for (const auto& v : a.variants)
-    if (v.key.distribution == dist && !v.cells.empty()) out.push_back(&v);
+    if (v.key.noise() == dist && !v.cells.empty()) out.push_back(&v);
   return out;
 }
-
-std::string title_of(const VariantReport& v) { return v.key.label() + (v.key.reference ? "" : " " + v.key.seeding); }
 
 // One colour per generator, one dash pattern per bead type: the reference thick and black.
 Chart profiles(const std::vector<const VariantReport*>& vs, const std::string& dist) {
@@ -37,7 +35,7 @@ Chart profiles(const std::vector<const VariantReport*>& vs, const std::string& d
       std::ostringstream style;
       style << "using 1:2 with lines dt " << t + 1 << " lw " << (vs[k]->key.reference ? 4 : 2) << " lc "
             << (vs[k]->key.reference ? std::string("rgb 'black'") : std::to_string(k));
-      Line l{title_of(*vs[k]) + " " + types[t].second, style.str(), {}, {}};
+      Line l{vs[k]->key.label_and_seeding() + " " + types[t].second, style.str(), {}, {}};
       for (std::size_t i = 0; i < z.size(); ++i) l.rows.push_back({z[i], y[i]});
       c.lines.push_back(std::move(l));
     }
@@ -54,7 +52,7 @@ Chart observable(const std::vector<const VariantReport*>& vs, const BilayerObser
     const ReplicaMean m = replica_mean(v->cells, mean, sem);
     if (m.n == 0) continue;
     l.rows.push_back({double(l.rows.size()), m.mean, m.ci95});
-    l.labels.push_back(title_of(*v) + (m.from_run_sem ? " †" : ""));
+    l.labels.push_back(v->key.label_and_seeding() + (m.from_run_sem ? " †" : ""));
     if (v->key.reference) {
       std::ostringstream s;
       s << "set arrow from graph 0, first " << m.mean << " to graph 1, first " << m.mean
@@ -74,7 +72,7 @@ Chart observable(const std::vector<const VariantReport*>& vs, const BilayerObser
 std::vector<std::string> write_bilayer_charts(const Analysis& a, const fs::path& dir, std::ostream* log) {
   std::vector<std::string> dists;
   for (const auto& v : a.variants)
-    if (std::find(dists.begin(), dists.end(), v.key.distribution) == dists.end()) dists.push_back(v.key.distribution);
+    if (std::find(dists.begin(), dists.end(), v.key.noise()) == dists.end()) dists.push_back(v.key.noise());
   std::vector<Chart> charts;
   for (const auto& d : dists) {
     const auto vs = of_distribution(a, d);

@@ -117,17 +117,17 @@ std::map<std::string, std::vector<const VariantReport*>> families(const Analysis
   bool several_dt = false;
   for (const auto& v : a.variants) several_dt |= v.key.dt != a.variants.front().key.dt;
   for (const auto& v : a.variants)
-    if (!v.key.reference && v.key.distribution == dist) {
+    if (!v.key.reference && v.key.noise() == dist) {
       char dt[32];
       std::snprintf(dt, sizeof dt, " dt=%g", v.key.dt);
-      f[v.key.generator + " " + v.key.seeding + (several_dt ? dt : "")].push_back(&v);
+      f[v.key.generator + " " + v.key.seeding_name() + (several_dt ? dt : "")].push_back(&v);
     }
   return f;
 }
 
 const VariantReport* reference(const Analysis& a, const std::string& dist) {
   for (const auto& v : a.variants)
-    if (v.key.reference && v.key.distribution == dist) return &v;
+    if (v.key.reference && v.key.noise() == dist) return &v;
   return nullptr;
 }
 
@@ -173,8 +173,8 @@ void overlay(std::vector<Chart>& out, const Analysis& a, const std::string& dist
       if (!lo || v->key.rounds < lo->key.rounds) lo = v;
       if (!hi || v->key.rounds > hi->key.rounds) hi = v;
     }
-    if (lo) add(*lo, lo->key.label() + " " + lo->key.seeding, "using 1:2 with lines lw 2");
-    if (hi && hi != lo) add(*hi, hi->key.label() + " " + hi->key.seeding, "using 1:2 with lines lw 2 dt 3");
+    if (lo) add(*lo, lo->key.label() + " " + lo->key.seeding_name(), "using 1:2 with lines lw 2");
+    if (hi && hi != lo) add(*hi, hi->key.label() + " " + hi->key.seeding_name(), "using 1:2 with lines lw 2 dt 3");
   }
   out.push_back(std::move(c));
 }
@@ -185,7 +185,7 @@ std::vector<std::string> write_charts(const Analysis& a, const std::vector<CellR
                                       std::ostream* log) {
   std::vector<std::string> dists;
   for (const auto& v : a.variants)
-    if (std::find(dists.begin(), dists.end(), v.key.distribution) == dists.end()) dists.push_back(v.key.distribution);
+    if (std::find(dists.begin(), dists.end(), v.key.noise()) == dists.end()) dists.push_back(v.key.noise());
   std::vector<Chart> charts;
   for (const auto& dist : dists) {
     const auto fams = families(a, dist);

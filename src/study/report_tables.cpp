@@ -73,11 +73,11 @@ std::string pass_table_markdown(const Analysis& a, const std::string& distributi
   o << "| generator | output | χ² pass fraction [" << ci << "] (steps) | lag-1 t pass fraction [" << ci
     << "] (pairs) |\n|---|---|---|---|\n";
   for (const auto& v : a.variants) {
-    if (v.key.distribution != distribution) continue;
+    if (v.key.noise() != distribution) continue;
     for (const auto& s : streams_of(v)) {
       const auto* c = find_pass(v, "chi2", s);
       const auto* t = find_pass(v, "ttest", s);
-      o << "| " << v.key.label() << (v.key.reference ? "" : " " + v.key.seeding) << " | "
+      o << "| " << v.key.label_and_seeding() << " | "
         << (s == "x" ? "" : s) << " | " << (c ? pass_cell(*c) : "–") << " | " << (t ? pass_cell(*t) : "–")
         << " |\n";
     }
@@ -91,7 +91,7 @@ std::string pass_table_csv(const Analysis& a) {
        "p_adjusted,differs\n";
   for (const auto& v : a.variants)
     for (const auto& p : v.passes)
-      o << v.key.generator << ',' << v.key.rounds << ',' << v.key.distribution << ',' << v.key.seeding << ','
+      o << v.key.generator << ',' << v.key.rounds << ',' << v.key.noise() << ',' << v.key.seeding_name() << ','
         << num(v.key.dt) << ',' << p.stream << ',' << p.test << ',' << p.trials << ',' << p.passed << ','
         << num(p.fraction) << ',' << num(p.ci_low) << ',' << num(p.ci_high) << ',' << num(p.decision.p) << ','
         << num(p.decision.p_adjusted) << ',' << int(p.decision.differs) << '\n';
@@ -104,7 +104,7 @@ std::string observables_csv(const Analysis& a) {
        "reference_sd,error_rate,sigma,test,statistic,dof,dof2,p_value,p_adjusted,differs,note\n";
   for (const auto& v : a.variants)
     for (const auto& c : v.observables)
-      o << v.key.generator << ',' << v.key.rounds << ',' << v.key.distribution << ',' << v.key.seeding << ','
+      o << v.key.generator << ',' << v.key.rounds << ',' << v.key.noise() << ',' << v.key.seeding_name() << ','
         << num(v.key.dt) << ',' << c.observable << ',' << c.n << ',' << num(c.value) << ',' << num(c.value_sd) << ','
         << c.n_ref << ',' << num(c.ref) << ',' << num(c.ref_sd) << ',' << num(c.error_rate) << ',' << num(c.sigma)
         << ',' << c.test << ',' << num(c.statistic) << ',' << num(c.dof) << ',' << num(c.dof2) << ','
@@ -127,8 +127,8 @@ std::string observables_markdown(const Analysis& a, const std::string& distribut
   for (std::size_t k = 0; k < names.size(); ++k) o << "---|";
   o << '\n';
   for (const auto& v : a.variants) {
-    if (v.key.reference || v.key.distribution != distribution) continue;
-    o << "| " << v.key.label() << ' ' << v.key.seeding << " |";
+    if (v.key.reference || v.key.noise() != distribution) continue;
+    o << "| " << v.key.label() << ' ' << v.key.seeding_name() << " |";
     for (const auto& n : names) {
       const Comparison* c = nullptr;
       for (const auto& x : v.observables)
@@ -152,7 +152,7 @@ std::string summary_markdown(const Analysis& a) {
   o << "| generator | distribution | seeding | replicas | verdict | smallest corrected p | NIST columns failed | "
        "ns per number | step (ms) | RNG share |\n|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& v : a.variants) {
-    o << "| " << v.key.label() << " | " << v.key.distribution << " | " << (v.key.reference ? "stream" : v.key.seeding)
+    o << "| " << v.key.label() << " | " << v.key.noise() << " | " << v.key.seeding_name()
       << " | " << v.cells.size() << (v.broken.empty() ? std::string() : fmt("+%.0f broken", double(v.broken.size())))
       << " | " << v.verdict << " | " << fmt("%.2g", v.min_p) << " | "
       << (std::isfinite(v.nist_failed) ? fmt("%.0f", v.nist_failed) + " / " + fmt("%.0f", v.nist_columns) : "–")
@@ -167,8 +167,8 @@ std::string summary_csv(const Analysis& a) {
   o << "generator,rounds,distribution,seeding,dt,replicas,broken,verdict,min_p_adjusted,min_p_what,"
        "nist_failed_columns,nist_columns,ns_per_number,step_ms,rng_share\n";
   for (const auto& v : a.variants)
-    o << v.key.generator << ',' << v.key.rounds << ',' << v.key.distribution << ','
-      << (v.key.reference ? "stream" : v.key.seeding) << ',' << num(v.key.dt) << ',' << v.cells.size() << ','
+    o << v.key.generator << ',' << v.key.rounds << ',' << v.key.noise() << ','
+      << v.key.seeding_name() << ',' << num(v.key.dt) << ',' << v.cells.size() << ','
       << v.broken.size() << ',' << csv_quote(v.verdict) << ',' << num(v.min_p) << ',' << csv_quote(v.min_p_what)
       << ',' << num(v.nist_failed) << ',' << num(v.nist_columns) << ','
       << num(v.ns_per_number) << ',' << num(v.step_ms) << ','
@@ -183,10 +183,10 @@ std::string cost_markdown(const Analysis& a) {
   for (const auto& v : a.variants) {
     double at8 = NAN;
     for (const auto& w : a.variants)
-      if (w.key.generator == v.key.generator && w.key.rounds == 8 && w.key.distribution == v.key.distribution &&
-          w.key.seeding == v.key.seeding && w.key.dt == v.key.dt)
+      if (w.key.generator == v.key.generator && w.key.rounds == 8 && w.key.noise() == v.key.noise() &&
+          w.key.seeding_name() == v.key.seeding_name() && w.key.dt == v.key.dt)
         at8 = w.step_ms;
-    o << "| " << v.key.label() << " | " << v.key.distribution << " | " << fmt("%.2f", v.ns_per_number) << " | "
+    o << "| " << v.key.label() << " | " << v.key.noise() << " | " << fmt("%.2f", v.ns_per_number) << " | "
       << fmt("%.3f", v.step_ms) << " | " << fmt("%.0f %%", 100 * v.rng_share) << " | "
       << speed_vs_8(at8, v.step_ms) << " |\n";
   }
@@ -197,7 +197,7 @@ std::string nist_final_analysis_report(const VariantReport& v, double alpha) {
   std::ostringstream o;
   const char* rule = "------------------------------------------------------------------------------\n";
   o << rule << "RESULTS FOR THE UNIFORMITY OF P-VALUES AND THE PROPORTION OF PASSING SEQUENCES\n" << rule
-    << "   generator is <" << v.key.label() << " " << v.key.distribution << ", cell " << v.nist_cell << ">\n"
+    << "   generator is <" << v.key.label() << " " << v.key.noise() << ", cell " << v.nist_cell << ">\n"
     << rule << " C1  C2  C3  C4  C5  C6  C7  C8  C9 C10  P-VALUE  PROPORTION  STATISTICAL TEST\n" << rule;
   std::size_t fail_prop = 0, fail_unif = 0;
   double max_m = 0;
@@ -268,8 +268,8 @@ const VariantReport* nist_source(const Analysis& a, const VariantReport& v) {
   if (!v.nist.empty()) return &v;
   for (const auto& w : a.variants)
     if (!w.nist.empty() && w.key.generator == v.key.generator && w.key.rounds == v.key.rounds &&
-        w.key.seeding == v.key.seeding && w.key.dt == v.key.dt && w.key.reference == v.key.reference &&
-        w.key.distribution.rfind(v.key.distribution.substr(0, v.key.distribution.find('-')), 0) == 0)
+        w.key.seeding_name() == v.key.seeding_name() && w.key.dt == v.key.dt && w.key.reference == v.key.reference &&
+        w.key.distribution == v.key.distribution)
       return &w;
   return nullptr;
 }
@@ -291,7 +291,7 @@ std::string zeta_markdown(const Analysis& a) {
   for (const auto& v : a.variants) {
     if (v.zeta.n == 0) continue;
     const std::string b = v.zeta_decision.differs ? "**" : "";
-    o << "| " << v.key.label() << " | " << v.key.distribution << " | " << (v.key.reference ? "stream" : v.key.seeding)
+    o << "| " << v.key.label() << " | " << v.key.noise() << " | " << v.key.seeding_name()
       << " | " << v.cells.size() << " | " << fmt("%.3g", double(v.zeta.n)) << " | " << b
       << fmt("%.4f", v.zeta.second_moment) << b << " " << interval(v.zeta.second_moment_ci)
       << " | " << fmt("%.3f", v.zeta.kurtosis) << " | " << adjusted(v.zeta_decision) << " | "
@@ -310,8 +310,8 @@ std::string zeta_csv(const Analysis& a) {
     if (v.zeta.n == 0) continue;
     const Comparison* t = find_observable(v, "temperature_mean");
     const double shift = t && t->ref != 0 ? (t->value - t->ref) / t->ref : NAN;
-    o << v.key.generator << ',' << v.key.rounds << ',' << v.key.distribution << ',' << v.key.feed << ','
-      << (v.key.reference ? "stream" : v.key.seeding) << ',' << num(v.key.dt) << ',' << v.cells.size() << ','
+    o << v.key.generator << ',' << v.key.rounds << ',' << v.key.noise() << ',' << rng::to_string(v.key.feed) << ','
+      << v.key.seeding_name() << ',' << num(v.key.dt) << ',' << v.cells.size() << ','
       << v.zeta.n << ',' << num(v.zeta.mean) << ',' << num(v.zeta.variance) << ',' << num(v.zeta.variance_ci.low)
       << ',' << num(v.zeta.variance_ci.high) << ',' << num(v.zeta.second_moment) << ','
       << num(v.zeta.second_moment_ci.low) << ',' << num(v.zeta.second_moment_ci.high) << ',' << num(v.zeta.skewness)
@@ -331,11 +331,11 @@ std::string flags_markdown(const Analysis& a) {
     std::string nist = "–";
     if (n && std::isfinite(n->nist_failed))
       nist = fmt("%.0f", n->nist_failed) + " / " + fmt("%.0f", n->nist_columns) +
-             (n == &v ? "" : " (words of " + n->key.distribution + ")");
+             (n == &v ? "" : " (words of " + n->key.noise() + ")");
     const std::string zeta = !v.zeta_decision.tested() ? "–"
                              : v.zeta_decision.differs ? "**flags** (" + fmt("%.4f", v.zeta.second_moment) + ")"
                                                        : "pass";
-    o << "| " << v.key.label() << " | " << v.key.distribution << " | " << v.key.seeding << " | "
+    o << "| " << v.key.label() << " | " << v.key.noise() << " | " << v.key.seeding_name() << " | "
       << pass_flag(v, "chi2") << " | " << pass_flag(v, "ttest") << " | " << nist << " | " << zeta << " | "
       << physics_flags(v) << " |\n";
   }

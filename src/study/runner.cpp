@@ -108,7 +108,8 @@ RunSummary run_study(const StudyConfig& config, Store& store, const RunOptions& 
         }
         char line[256];
         std::snprintf(line, sizeof line, "[study] %zu/%zu cells  %-10s %-7s %-9s rep%-2d %6.1fs  %s%s  ETA %s\n",
-                      done, sum.cells, cell.label().c_str(), cell.distribution.c_str(), cell.seeding.c_str(),
+                      done, sum.cells, cell.label().c_str(), std::string(rng::to_string(cell.distribution)).c_str(),
+                      cell.seeding_name().c_str(),
                       cell.replica, r.seconds, std::string(to_string(r.status)).c_str(),
                       r.status == CellStatus::ok ? "" : (" (" + r.reason + ")").c_str(), format_duration(eta).c_str());
         *options.progress << line << std::flush;

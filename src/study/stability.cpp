@@ -12,7 +12,7 @@ namespace dpdrng::study {
 namespace {
 
 bool is_reference_rdf_cell(const CellResult& c, double dt) {
-  return c.cell.reference && c.cell.feed == "halves" && c.cell.dt == dt && c.status == CellStatus::ok;
+  return c.cell.reference && c.cell.feed == rng::Feed::halves && c.cell.dt == dt && c.status == CellStatus::ok;
 }
 
 double median(std::vector<double> v) {

@@ -10,7 +10,17 @@
 
 namespace dpdrng::study {
 
-std::string Cell::noise() const { return feed == "halves" ? distribution : distribution + "-" + feed; }
+std::string noise_name(rng::Distribution d, rng::Feed f) {
+  const std::string name(rng::to_string(d));
+  return f == rng::Feed::halves ? name : name + "-" + std::string(rng::to_string(f));
+}
+
+std::string seeding_name(rng::Seeding s, bool reference) {
+  return reference ? "stream" : std::string(rng::to_string(s));
+}
+
+std::string Cell::noise() const { return noise_name(distribution, feed); }
+std::string Cell::seeding_name() const { return study::seeding_name(seeding, reference); }
 
 IntegratorSpec parse_integrator_spec(const std::string& text) {
   if (text == "shardlow") return {dpd::Integrator::shardlow, 0.5};
@@ -45,7 +55,7 @@ std::string Cell::id() const {
     std::snprintf(buf, sizeof buf, "%s-%s-%s-rep%02d", generator.c_str(), n.c_str(), dt_part.c_str(), replica);
   else
     std::snprintf(buf, sizeof buf, "%s-r%02d-%s-%s-%s-rep%02d", generator.c_str(), rounds, n.c_str(),
-                  seeding.c_str(), dt_part.c_str(), replica);
+                  seeding_name().c_str(), dt_part.c_str(), replica);
   return buf;
 }
 
@@ -57,17 +67,17 @@ std::string Cell::label() const {
 std::vector<Cell> enumerate_cells(const StudyConfig& config) {
   std::vector<Cell> cells;
   // The battery reads the pair's first block, whatever the feed: only the first feed's cells run it.
-  const auto wants_nist = [&](const std::string& gen, const std::string& dist, const std::string& feed, int replica) {
+  const auto wants_nist = [&](const std::string& gen, rng::Distribution dist, rng::Feed feed, int replica) {
     const auto& t = config.tests;
     return std::find(t.nist_generators.begin(), t.nist_generators.end(), gen) != t.nist_generators.end() &&
            std::find(t.nist_distributions.begin(), t.nist_distributions.end(), dist) != t.nist_distributions.end() &&
-           replica < t.nist_replicas && (feed == "halves" || feed == config.feeds.front());
+           replica < t.nist_replicas && (feed == rng::Feed::halves || feed == config.feeds.front());
   };
   // Shardlow's sweep draws its numbers outside the pair loop's taps: its cells measure physics only.
   const auto tapped = [&](const std::string& integ) {
     return integrator_of(integ, config.scene).kind == dpd::Integrator::mvv;
   };
-  const std::vector<std::string> halves_only{"halves"};
+  const std::vector<rng::Feed> halves_only{rng::Feed::halves};
   const std::vector<std::string> scene_integrator{""};
   for (double dt : config.scene.dt)
     for (const auto& integ : config.integrators.empty() ? scene_integrator : config.integrators) {
@@ -75,15 +85,14 @@ std::vector<Cell> enumerate_cells(const StudyConfig& config) {
         // A replica's seed sets the initial state (and the reference's stream); distinct per replica, shared
         // across generators.
         const std::uint64_t seed = rng::splitmix64_mix(config.seed * 0x9e3779b97f4a7c15ull + std::uint64_t(rep));
-        for (const auto& dist : config.distributions)
-          for (const auto& feed : dist == "gauss" ? config.feeds : halves_only) {
+        for (const rng::Distribution dist : config.distributions)
+          for (const rng::Feed feed : dist == rng::Distribution::gauss ? config.feeds : halves_only) {
             // Each feed has its own reference: MT19937 under that feed (a control of the feed itself).
             Cell ref;
             ref.generator = config.reference;
             ref.rounds = 1;
             ref.distribution = dist;
             ref.feed = feed;
-            ref.seeding = "stream";
             ref.dt = dt;
             ref.integrator = integ;
             ref.replica = rep;
@@ -92,7 +101,7 @@ std::vector<Cell> enumerate_cells(const StudyConfig& config) {
             ref.nist = wants_nist(ref.generator, dist, feed, rep) && tapped(integ);
             cells.push_back(ref);
             for (const auto& g : config.generators)
-              for (const auto& seeding : g.seedings.empty() ? config.seedings : g.seedings)
+              for (const rng::Seeding seeding : g.seedings.empty() ? config.seedings : g.seedings)
                 for (int r : g.rounds) {
                   Cell c = ref;
                   c.generator = g.name;

@@ -38,7 +38,7 @@ std::string hex_lines(const std::vector<std::uint64_t>& words) {
   return text;
 }
 
-// The contract for tea32, written out: call i hashes S+i, low word -> x0, output (x1'<<32)|x0'.
+// The stream contract for tea32, written out: call i hashes S+i, low word -> x0, output (x1'<<32)|x0'.
 TEST(CliGen, HexTea32FollowsTheContract) {
   const Result r = run("gen --generator tea32 --rounds 8 --seeding counter --start 5 --count 40");
   ASSERT_EQ(r.code, 0) << r.err;

@@ -1,5 +1,5 @@
 // The CLI contract of `dpdrng simulate` (water and --scene bilayer) and `simulate-bilayer`, run as the built
-// binary: bad parameters exit 2 with one line naming the parameter; a run exits 0 with the issue's JSON keys,
+// binary: bad parameters exit 2 with one line naming the parameter; a run exits 0 with its fixed set of JSON keys,
 // a run that blows up included (its status says where and why: data, not an error).
 #include <gtest/gtest.h>
 
@@ -103,7 +103,7 @@ TEST(CliSimulate, BadBilayerParametersExitTwoNamingTheParameter) {
   for (const auto& c : cases) expect_refused(c);
 }
 
-// The issue's keys, and no others: the record is what scripts and the study read.
+// The record's fixed keys, and no others: the record is what scripts and the study read.
 TEST(CliSimulate, TinyWaterRunGivesTheIssuesJson) {
   const json j = run_json(kTiny);
   EXPECT_EQ(j.at("status"), "ok");

@@ -63,7 +63,7 @@ BilayerResult* BilayerCiRun::result_ = nullptr;
 
 TEST_F(BilayerCiRun, StaysIntact) {
   const BilayerResult& r = *result_;
-  EXPECT_EQ(r.status, "ok");
+  EXPECT_EQ(r.status.text(), "ok");
   EXPECT_EQ(r.lipids_out_max, 0);
   EXPECT_LT(r.momentum_drift, 1e-12);
   // Still a bilayer: tails ordered along the normal, two head layers several bead diameters apart.
@@ -84,7 +84,7 @@ TEST_F(BilayerCiRun, ProfilesCountEveryBead) {
   EXPECT_NEAR(water, 5400 - 146 * 15, 1e-6);
 }
 
-// Issue 7: leaving out either bonded virial shifts the tension by tens of units (here it must exceed 10;
+// Leaving out either bonded virial shifts the tension by tens of units (here it must exceed 10;
 // the relaxed membrane shows about +30 without the bond and −16 without the bending virial).
 TEST_F(BilayerCiRun, BondedVirialsMoveTheTension) {
   const BilayerResult& r = *result_;

@@ -7,6 +7,7 @@
 #include <mutex>
 #include <string>
 
+#include "config_text.hpp"
 #include "dpdrng/rng/splitmix.hpp"
 #include "dpdrng/study/cell_result.hpp"
 #include "dpdrng/study/config.hpp"
@@ -15,11 +16,12 @@ namespace dpdrng::study::fake {
 
 // The small sweep the fake-measure tests share: tea32 at 1 and 8 rounds, tea64 at 1, a 16-bead scene.
 inline std::string small_config_toml(const std::string& name, int replicas) {
-  return "[study]\nname = \"" + name + "\"\nreplicas = " + std::to_string(replicas) +
-         "\n[sweep]\ndistributions = [\"gauss\"]\n"
-         "[[sweep.generator]]\nname = \"tea32\"\nrounds = [1, 8]\n"
-         "[[sweep.generator]]\nname = \"tea64\"\nrounds = [1]\n"
-         "[scene]\nparticles = 16\nsteps = 20\nequilibrate = 2\n[tests]\nttest_pairs = 2\n";
+  return config_text::StudyText{.name = name,
+                                .replicas = replicas,
+                                .generators = {{}, {.name = "tea64", .rounds = "[1]"}},
+                                .scene = "particles = 16\nsteps = 20\nequilibrate = 2\n",
+                                .tests = "ttest_pairs = 2\n"}
+      .text();
 }
 
 struct FakeMeasure {

@@ -10,6 +10,7 @@
 #include "fake_measure.hpp"
 
 using namespace dpdrng::study;
+namespace rng = dpdrng::rng;
 
 namespace {
 
@@ -269,7 +270,8 @@ TEST(StudyAnalysis, MissingReferenceGivesNoVerdict) {
 
 TEST(StudyReport, NistLayoutFollowsTheReference) {
   VariantReport v;
-  v.key = VariantKey{"tea32", 1, "gauss", "distance", 0.04, false};
+  v.key = VariantKey{"tea32", 1, rng::Distribution::gauss, rng::Feed::halves, rng::Seeding::distance, 0.04,
+                     false, ""};
   v.nist_cell = "tea32-r01";
   NistRow r;
   r.test = "Frequency";

@@ -22,29 +22,23 @@
 #include "../temp_dir.hpp"
 
 using namespace dpdrng::study;
+namespace rng = dpdrng::rng;
+namespace dpd = dpdrng::dpd;
 namespace fs = std::filesystem;
 
 namespace {
 
 // Seconds, not minutes: the scene's box is fixed (5 400 beads), so the run is short instead: 100 warm-up steps
 // at dt 0.005, 200 production steps.
-const std::string kTinyBilayer = R"(
-[study]
-name = "tiny-bilayer"
-replicas = 1
-seed = 7
-[sweep]
-distributions = ["gauss"]
-[[sweep.generator]]
-name = "tea32"
-rounds = [1]
-[scene]
-name = "bilayer"
-particles = 5400
-density = 3.0
-steps = 300
-equilibrate = 100
-)";
+const std::string kTinyBilayer =
+    config_text::StudyText{.name = "tiny-bilayer",
+                           .replicas = 1,
+                           .study_extra = "seed = 7\n",
+                           .generators = {{.rounds = "[1]"}},
+                           .scene = "name = \"bilayer\"\nparticles = 5400\ndensity = 3.0\n"
+                                    "steps = 300\nequilibrate = 100\n",
+                           .tests = ""}
+        .text();
 
 using config_text::error_of;
 using config_text::with;
@@ -100,7 +94,7 @@ TEST(BilayerStudyConfig, ShippedConfigSweepsTheMembrane) {
   std::size_t blocks = 0;
   for (const auto& cell : cells) {
     EXPECT_FALSE(cell.nist) << cell.id();
-    blocks += cell.feed == "blocks";
+    blocks += cell.feed == rng::Feed::blocks;
   }
   EXPECT_EQ(blocks, 12u);
   EXPECT_FALSE(c.canonical()["scene"].contains("a"));
@@ -113,7 +107,7 @@ TEST(BilayerStudyConfig, SceneDefaultsAreTheBilayers) {
   EXPECT_DOUBLE_EQ(c.scene.density, 3.0);
   EXPECT_DOUBLE_EQ(c.scene.gamma, 4.5);
   EXPECT_EQ(c.scene.dt, std::vector<double>{0.01});
-  EXPECT_EQ(c.scene.pairs, "cells");
+  EXPECT_EQ(c.scene.pairs, dpd::PairMode::cells);
   EXPECT_EQ(c.tests.ttest_pairs, 0);  // the water default (100) would ask for taps the bilayer does not make
 }
 
@@ -199,7 +193,7 @@ TEST(BilayerStudyAnalysis, PlantedShiftIsFoundAndNothingElse) {
   EXPECT_NE(table.find("| tea32(1) distance | T |"), std::string::npos) << table;
 }
 
-// Issue 7's driver end to end on the real engine: 2 cells of 300 steps.
+// The membrane study's driver end to end on the real engine: 2 cells of 300 steps.
 TEST(BilayerStudyCli, RunResumeReport) {
   TempDir tmp;
   std::ofstream(tmp.path / "b.toml") << kTinyBilayer;

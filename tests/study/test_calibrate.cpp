@@ -170,7 +170,7 @@ TEST(Calibrate, RefusesBadPlans) {
   plan.lag1 = {0.1};
   const StudyConfig pool = calibration_pool(cfg, plan);
   EXPECT_EQ(pool.generators.back().name, "defect:lag1=0.1");
-  EXPECT_EQ(pool.generators.back().seedings, std::vector<std::string>{"pair-step"});
+  EXPECT_EQ(pool.generators.back().seedings, std::vector<rng::Seeding>{rng::Seeding::pair_step});
 }
 
 TEST(Calibrate, PoolRunsTheFirstFeedOnly) {
@@ -179,6 +179,6 @@ TEST(Calibrate, PoolRunsTheFirstFeedOnly) {
   const StudyConfig cfg = parse_config(toml, "c.toml");
   ASSERT_EQ(cfg.feeds.size(), 2u);
   const StudyConfig pool = calibration_pool(cfg, small_plan());
-  EXPECT_EQ(pool.feeds, std::vector<std::string>{"blocks"});
-  for (const auto& c : enumerate_cells(pool)) EXPECT_EQ(c.feed, "blocks");
+  EXPECT_EQ(pool.feeds, std::vector<rng::Feed>{rng::Feed::blocks});
+  for (const auto& c : enumerate_cells(pool)) EXPECT_EQ(c.feed, rng::Feed::blocks);
 }

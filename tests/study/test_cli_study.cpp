@@ -24,26 +24,12 @@ namespace fs = std::filesystem;
 namespace {
 
 // A real (engine-backed) study small enough for a unit test.
-const std::string kTiny = R"(
-[study]
-name = "tiny"
-replicas = 3
-[sweep]
-distributions = ["gauss"]
-[[sweep.generator]]
-name = "tea32"
-rounds = [1, 8]
-[scene]
-particles = 32
-steps = 240
-equilibrate = 40
-[tests]
-chi2_steps = 4
-ttest_pairs = 4
-nist_sequences = 2
-nist_bits = 65536
-nist_generators = ["tea32"]
-)";
+const std::string kTiny = config_text::StudyText{.name = "tiny",
+                                                 .replicas = 3,
+                                                 .scene = "particles = 32\nsteps = 240\nequilibrate = 40\n",
+                                                 .tests = "chi2_steps = 4\nttest_pairs = 4\nnist_sequences = 2\n"
+                                                          "nist_bits = 65536\nnist_generators = [\"tea32\"]\n"}
+                              .text();
 
 int run_cli(const std::string& args, std::string* err = nullptr, const fs::path& err_file = {}) {
   const fs::path e = err_file.empty() ? fs::temp_directory_path() / ("dpdrng-cli-err-" + std::to_string(getpid())) : err_file;

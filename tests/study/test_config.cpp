@@ -10,25 +10,11 @@
 #include "config_text.hpp"
 
 using namespace dpdrng::study;
+namespace rng = dpdrng::rng;
 
 namespace {
 
-const std::string kMinimal = R"(
-[study]
-name = "t"
-replicas = 2
-[sweep]
-distributions = ["gauss"]
-[[sweep.generator]]
-name = "tea32"
-rounds = [1, 8]
-[scene]
-particles = 32
-steps = 100
-equilibrate = 10
-[tests]
-ttest_pairs = 4
-)";
+const std::string kMinimal = config_text::StudyText{}.text();
 
 using config_text::error_of;
 using config_text::with;
@@ -87,7 +73,7 @@ TEST(StudyConfig, ErrorsNameTheKey) {
 }
 
 // The error-control rule: study-wide by default; "variant" on request; anything else names the key. The
-// default leaves the canonical form (and so every existing result directory's hash) as it was.
+// default adds nothing to the canonical form, so a config without the key keeps its result directory's hash.
 TEST(StudyConfig, ErrorControlIsReadStrictly) {
   const StudyConfig def = parse_config(kMinimal, "cfg.toml");
   EXPECT_EQ(def.tests.error_control, ErrorControl::study);
@@ -119,8 +105,8 @@ TEST(StudyConfig, PaperStudyCoversBothTeaFamiliesAtAllRounds) {
   const std::vector<int> rounds{1, 2, 3, 4, 5, 6, 8, 16, 32};
   ASSERT_EQ(c.generators.size(), 2u);
   for (const auto& g : c.generators) EXPECT_EQ(g.rounds, rounds) << g.name;
-  EXPECT_EQ(c.distributions, (std::vector<std::string>{"gauss", "uniform"}));
-  EXPECT_EQ(c.feeds, (std::vector<std::string>{"halves", "blocks", "inverse"}));
+  EXPECT_EQ(c.distributions, (std::vector<rng::Distribution>{rng::Distribution::gauss, rng::Distribution::uniform}));
+  EXPECT_EQ(c.feeds, (std::vector<rng::Feed>{rng::Feed::halves, rng::Feed::blocks, rng::Feed::inverse}));
   EXPECT_EQ(c.scene.steps, 10000);
   EXPECT_EQ(c.scene.equilibrate, 500);
   EXPECT_EQ(c.tests.nist_sequences, 1000);

@@ -34,7 +34,7 @@ TEST(DecompositionRun, MomentumIsConservedUndecomposedAndDriftsWithDistanceSeedi
   c.domains = parse_domains("2,2,1");
   const DecompResult d = run_decomposition(c);
   ASSERT_TRUE(d.has_reference);
-  EXPECT_EQ(d.decomposed.status, "ok");
+  EXPECT_EQ(d.decomposed.status.text(), "ok");
   EXPECT_LT(d.reference.momentum_drift, 1e-12);
   EXPECT_EQ(d.reference.boundary.boundary, 0u);
   EXPECT_GT(d.decomposed.boundary.zeta_mismatch, 0u);

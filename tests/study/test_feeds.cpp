@@ -1,5 +1,5 @@
 // The feed as a study factor: [sweep] feeds multiplies the Gaussian cells (not the uniform ones), a halves cell
-// keeps the id it had before the factor existed, a config without feeds keeps its hash, a stored cell without
+// keeps the id it has in a study without the factor, a config without feeds keeps its hash, a stored cell without
 // a feed reads as halves, and the analysis pairs each feed with its own reference and pools ζ over replicas.
 #include <gtest/gtest.h>
 
@@ -17,34 +17,22 @@
 #include "dpdrng/study/sweep.hpp"
 
 using namespace dpdrng::study;
+namespace rng = dpdrng::rng;
 using config_text::error_of;
 using config_text::with;
 
 namespace {
 
-const std::string kConfig = R"(
-[study]
-name = "f"
-replicas = 2
-[sweep]
-distributions = ["gauss", "uniform"]
-[[sweep.generator]]
-name = "tea32"
-rounds = [1, 8]
-[scene]
-particles = 32
-steps = 100
-equilibrate = 10
-[tests]
-ttest_pairs = 4
-nist_generators = ["tea32"]
-)";
+const std::string kConfig = config_text::StudyText{.name = "f",
+                                                   .distributions = R"(["gauss", "uniform"])",
+                                                   .tests = "ttest_pairs = 4\nnist_generators = [\"tea32\"]\n"}
+                                .text();
 
 const std::string kFeeds = with(kConfig, "[[sweep.generator]]", "feeds = [\"halves\", \"blocks\", \"inverse\"]\n[[sweep.generator]]");
 
 TEST(StudyFeeds, DefaultIsHalvesAndKeepsTheHashAndIds) {
   const StudyConfig c = parse_config(kConfig, "cfg.toml");
-  EXPECT_EQ(c.feeds, std::vector<std::string>{"halves"});
+  EXPECT_EQ(c.feeds, std::vector<rng::Feed>{rng::Feed::halves});
   const StudyConfig explicit_halves = parse_config(with(kConfig, "[[sweep.generator]]",
                                                         "feeds = [\"halves\"]\n[[sweep.generator]]"), "cfg.toml");
   EXPECT_EQ(c.hash, explicit_halves.hash);
@@ -52,7 +40,7 @@ TEST(StudyFeeds, DefaultIsHalvesAndKeepsTheHashAndIds) {
   EXPECT_EQ(cells.size(), 2u * (3 + 3));
   EXPECT_EQ(cells[0].id(), "mt19937-gauss-dt0.04-rep00");
   EXPECT_EQ(cells[1].id(), "tea32-r01-gauss-distance-dt0.04-rep00");
-  for (const auto& cell : cells) EXPECT_EQ(cell.feed, "halves");
+  for (const auto& cell : cells) EXPECT_EQ(cell.feed, rng::Feed::halves);
 }
 
 TEST(StudyFeeds, FeedsMultiplyGaussianCellsOnly) {
@@ -63,9 +51,9 @@ TEST(StudyFeeds, FeedsMultiplyGaussianCellsOnly) {
   std::set<std::string> ids;
   for (const auto& cell : cells) {
     ids.insert(cell.id());
-    if (cell.distribution == "uniform") EXPECT_EQ(cell.feed, "halves");
+    if (cell.distribution == rng::Distribution::uniform) EXPECT_EQ(cell.feed, rng::Feed::halves);
     // NIST reads the first block: only the first feed's cells run it.
-    if (cell.feed != "halves") EXPECT_FALSE(cell.nist) << cell.id();
+    if (cell.feed != rng::Feed::halves) EXPECT_FALSE(cell.nist) << cell.id();
   }
   EXPECT_EQ(ids.size(), cells.size());
   EXPECT_TRUE(ids.count("tea32-r01-gauss-blocks-distance-dt0.04-rep01"));
@@ -73,12 +61,12 @@ TEST(StudyFeeds, FeedsMultiplyGaussianCellsOnly) {
   EXPECT_TRUE(ids.count("tea32-r08-uniform-distance-dt0.04-rep00"));
 }
 
-// A cell written before the feed existed has no cell.feed attribute: it reads as halves, with its old id.
+// A cell record without a cell.feed attribute reads as halves, with the id of a halves cell.
 TEST(StudyFeeds, StoredCellWithoutAFeedReadsAsHalves) {
   const StudyConfig c = parse_config(kFeeds, "cfg.toml");
   CellResult r;
   r.cell = enumerate_cells(c)[1];
-  ASSERT_EQ(r.cell.feed, "halves");
+  ASSERT_EQ(r.cell.feed, rng::Feed::halves);
   std::string tmpl = (std::filesystem::temp_directory_path() / "dpdrng-feed-XXXXXX").string();
   const std::filesystem::path dir = mkdtemp(tmpl.data());
   {
@@ -89,7 +77,7 @@ TEST(StudyFeeds, StoredCellWithoutAFeedReadsAsHalves) {
     ASSERT_TRUE(h5::read_attributes(g.id()).count("cell.feed"));
     ASSERT_GE(H5Adelete(g.id(), "cell.feed"), 0);
     const CellResult back = read_cell(g.id());
-    EXPECT_EQ(back.cell.feed, "halves");
+    EXPECT_EQ(back.cell.feed, rng::Feed::halves);
     EXPECT_EQ(back.cell.id(), r.cell.id());
   }
   std::filesystem::remove_all(dir);
@@ -110,7 +98,7 @@ TEST(StudyFeeds, AnalysisPairsFeedsWithTheirReferenceAndPoolsZeta) {
     CellResult r;
     r.cell = cell;
     // A variance of 0.965 for 32TEA(1) under halves, 1 otherwise; 10⁶ draws a cell.
-    const double m2 = cell.generator == "tea32" && cell.rounds == 1 && cell.feed == "halves" ? 0.965 : 1.0;
+    const double m2 = cell.generator == "tea32" && cell.rounds == 1 && cell.feed == rng::Feed::halves ? 0.965 : 1.0;
     const double n = 1e6;
     r.scalars["zeta_n"] = n, r.scalars["zeta_s1"] = 0, r.scalars["zeta_s2"] = m2 * n;
     r.scalars["zeta_s3"] = 0, r.scalars["zeta_s4"] = 3 * m2 * m2 * n;
@@ -126,7 +114,7 @@ TEST(StudyFeeds, AnalysisPairsFeedsWithTheirReferenceAndPoolsZeta) {
     ASSERT_NE(ref, nullptr);
     EXPECT_EQ(ref->key.feed, v.key.feed);
     EXPECT_EQ(v.zeta.n, 2000000u);
-    if (v.key.generator == "tea32" && v.key.rounds == 1 && v.key.feed == "halves") {
+    if (v.key.generator == "tea32" && v.key.rounds == 1 && v.key.feed == rng::Feed::halves) {
       EXPECT_NEAR(v.zeta.second_moment, 0.965, 1e-12);
       EXPECT_NEAR(v.zeta_predicted_shift, -0.035, 1e-12);
       EXPECT_TRUE(v.zeta_decision.differs);

@@ -21,24 +21,12 @@ using config_text::with;
 
 namespace {
 
-const std::string kConfig = R"(
-[study]
-name = "i"
-replicas = 2
-[sweep]
-distributions = ["gauss"]
-[[sweep.generator]]
-name = "tea32"
-rounds = [1]
-[scene]
-particles = 64
-lambda = 0.6
-steps = 100
-equilibrate = 10
-[tests]
-ttest_pairs = 4
-nist_generators = ["tea32"]
-)";
+const std::string kConfig =
+    config_text::StudyText{.name = "i",
+                           .generators = {{.rounds = "[1]"}},
+                           .scene = "particles = 64\nlambda = 0.6\nsteps = 100\nequilibrate = 10\n",
+                           .tests = "ttest_pairs = 4\nnist_generators = [\"tea32\"]\n"}
+        .text();
 
 const std::string kSwept =
     with(kConfig, "[[sweep.generator]]", "integrators = [\"mvv:0.5\", \"mvv:0.65\", \"shardlow\"]\n[[sweep.generator]]");
@@ -91,7 +79,8 @@ TEST(StudyIntegrators, BadIntegratorsNameTheKey) {
             std::string::npos);
 }
 
-// The record carries the integrator when the sweep names one, and only then (older records stay as they were).
+// The record carries the integrator when the sweep names one, and only then (the records of a study without the
+// factor lack the attribute).
 TEST(StudyIntegrators, CellRecordsCarryTheIntegrator) {
   TempDir tmp;
   const auto swept = enumerate_cells(parse_config(kSwept, "cfg.toml"));
@@ -122,7 +111,7 @@ TEST(StudyTime, EachDtRunsTheSameSimulatedTime) {
     const dpd::WaterConfig w = engine_config(cell, c, 1, TapPlan{});
     EXPECT_NEAR(double(w.steps) * w.dt, 2.0, 1e-12) << cell.id();
   }
-  // Without scene.time the canonical form (and so every stored hash) is as it was.
+  // Without scene.time the canonical form has no time key, so such configs keep their hash.
   EXPECT_EQ(parse_config(kConfig, "cfg.toml").canonical()["scene"].count("time"), 0u);
   EXPECT_NE(error_of(with(kConfig, "steps = 100", "steps = 100\ntime = 2.0")).find("scene.time"), std::string::npos);
   EXPECT_NE(error_of(with(kConfig, "steps = 100\nequilibrate = 10", "equilibrate_time = 1.0")).find("equilibrate_time"),

@@ -11,6 +11,7 @@
 #include <sys/wait.h>
 
 #include "../temp_dir.hpp"
+#include "config_text.hpp"
 #include "dpdrng/study/stability.hpp"
 #include "dpdrng/study/store.hpp"
 #include "dpdrng/study/sweep.hpp"
@@ -20,25 +21,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kConfig = R"(
-[study]
-name = "s"
-replicas = 2
-[sweep]
-distributions = ["gauss"]
-integrators = ["mvv:0.5", "shardlow"]
-[[sweep.generator]]
-name = "tea32"
-rounds = [1]
-[scene]
-particles = 64
-dt = [0.02, 0.05, 0.1]
-time = 2.0
-pairs = "cells"
-[tests]
-chi2_steps = 0
-ttest_pairs = 0
-)";
+const std::string kConfig =
+    config_text::StudyText{.name = "s",
+                           .sweep_extra = "integrators = [\"mvv:0.5\", \"shardlow\"]\n",
+                           .generators = {{.rounds = "[1]"}},
+                           .scene = "particles = 64\ndt = [0.02, 0.05, 0.1]\ntime = 2.0\npairs = \"cells\"\n",
+                           .tests = "chi2_steps = 0\nttest_pairs = 0\n"}
+        .text();
 
 // MVV at λ = 0.5 runs hot by 2 % × (Δt / 0.02) and blows up at Δt 0.1 (one replica at step 7, the other at 9);
 // Shardlow holds k_BT = 1.001 and is stable throughout. D and g(r) of MT at Δt 0.02 are the reference.

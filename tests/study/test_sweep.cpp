@@ -3,6 +3,7 @@
 
 #include <set>
 
+#include "config_text.hpp"
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/study/config.hpp"
 #include "dpdrng/study/sweep.hpp"
@@ -11,31 +12,15 @@ using namespace dpdrng::study;
 
 namespace {
 StudyConfig two_by_two() {
-  return parse_config(R"(
-[study]
-name = "s"
-replicas = 3
-[sweep]
-distributions = ["gauss", "uniform"]
-seedings = ["distance", "pair-step"]
-[[sweep.generator]]
-name = "tea32"
-rounds = [1, 8]
-[[sweep.generator]]
-name = "splitmix64"
-seedings = ["pair-step"]
-[scene]
-particles = 16
-steps = 50
-equilibrate = 5
-dt = [0.02, 0.04]
-[tests]
-ttest_pairs = 2
-nist_generators = ["tea32"]
-nist_distributions = ["gauss"]
-nist_replicas = 1
-)",
-                      "s.toml");
+  const config_text::StudyText text{
+      .name = "s",
+      .replicas = 3,
+      .distributions = R"(["gauss", "uniform"])",
+      .sweep_extra = "seedings = [\"distance\", \"pair-step\"]\n",
+      .generators = {{}, {.name = "splitmix64", .rounds = "", .extra = "seedings = [\"pair-step\"]\n"}},
+      .scene = "particles = 16\nsteps = 50\nequilibrate = 5\ndt = [0.02, 0.04]\n",
+      .tests = "ttest_pairs = 2\nnist_generators = [\"tea32\"]\nnist_distributions = [\"gauss\"]\nnist_replicas = 1\n"};
+  return parse_config(text.text(), "s.toml");
 }
 }  // namespace
 

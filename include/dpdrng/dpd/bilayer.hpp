@@ -99,8 +99,8 @@ struct BilayerSeries {
 };
 
 struct BilayerResult {
-  std::string status = "ok";  // "ok", "unstable at step k: …", or "disrupted at step k: n lipids left …"
-  bool ok() const { return status == "ok"; }
+  RunStatus status;  // disrupted when a lipid left the membrane: "disrupted at step k: n lipid(s) left …"
+  bool ok() const { return status.ok(); }
   std::int64_t steps_done = 0;
   std::string generator, seeding, distribution, pairs;
   std::string feed = "halves";

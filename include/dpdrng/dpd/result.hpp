@@ -4,6 +4,7 @@
 // status says "unstable at step k: reason" and the observables cover the steps done.
 #include <array>
 #include <cstdint>
+#include <iosfwd>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -78,9 +79,26 @@ struct Series {
   std::vector<double> px, py, pz;  // total momentum
 };
 
+// How a run ended. unstable: it blew up at `step` and its observables mean nothing; disrupted (the bilayer): a
+// lipid left the membrane at `step`, the run went on to the end and its observables are data.
+enum class RunState { ok, unstable, disrupted };
+
+struct RunStatus {
+  RunState state = RunState::ok;
+  std::int64_t step = -1;
+  std::string detail;  // why, in words
+
+  static RunStatus unstable(std::int64_t step, std::string why) { return {RunState::unstable, step, std::move(why)}; }
+  static RunStatus disrupted(std::int64_t step, std::string why) { return {RunState::disrupted, step, std::move(why)}; }
+  bool ok() const { return state == RunState::ok; }
+  // What records and output carry: "ok", "unstable at step k: <detail>" or "disrupted at step k: <detail>".
+  std::string text() const;
+};
+std::ostream& operator<<(std::ostream& o, const RunStatus& s);
+
 struct RunResult {
-  std::string status = "ok";
-  bool ok() const { return status == "ok"; }
+  RunStatus status;
+  bool ok() const { return status.ok(); }
   std::int64_t steps_done = 0;
   std::string generator, seeding, distribution, pairs;
   std::string feed = "halves";
@@ -112,14 +130,14 @@ nlohmann::json timings_json(const Timings& t);   // the whole-run timings (not t
 nlohmann::json to_json(const ZetaSums& z);       // {n, s1, s2, s3, s4}: the power sums Σζ^k
 void put_mean_sem(nlohmann::json& j, const std::string& key, const Stat& s);   // key_mean, key_sem
 void put_value_sem(nlohmann::json& j, const std::string& key, const Stat& s);  // key (the mean), key_sem
-// "unstable at step k: …": the run blew up, and its observables mean nothing.
-inline bool blew_up(const std::string& status) { return status.rfind("unstable", 0) == 0; }
+// The run blew up, and its observables mean nothing.
+inline bool blew_up(const RunStatus& status) { return status.state == RunState::unstable; }
 // For a run that blew up: every key of a JSON record except `kept` (labels, timings, diagnostics) becomes null.
 void null_observables(nlohmann::json& j, std::initializer_list<const char*> kept);
 // status, steps_done, the noise labels, pair mode and bead count of any scene's result.
 template <class Result>
 void put_run_labels(nlohmann::json& j, const Result& r) {
-  j["status"] = r.status;
+  j["status"] = r.status.text();
   j["steps_done"] = r.steps_done;
   j["generator"] = r.generator;
   j["seeding"] = r.seeding;

@@ -18,14 +18,18 @@ namespace dpdrng::study {
 struct VariantKey {
   std::string generator;
   int rounds = 1;
-  std::string distribution;  // with its feed unless halves (Cell::noise): "gauss", "gauss-blocks", "uniform"
-  std::string seeding;
+  rng::Distribution distribution = rng::Distribution::gauss;
+  rng::Feed feed = rng::Feed::halves;
+  rng::Seeding seeding = rng::Seeding::distance;  // unused by the reference
   double dt = 0.04;
   bool reference = false;
-  std::string feed = "halves";
   std::string integrator;  // Cell::integrator: empty unless the sweep names integrators
 
   std::string label() const;  // "tea32(1)"
+  // The label with the seeding: "tea32(1) distance"; the reference's label alone.
+  std::string label_and_seeding() const;
+  std::string noise() const;         // noise_name(distribution, feed)
+  std::string seeding_name() const;  // "stream" for the reference
   auto operator<=>(const VariantKey&) const = default;
 };
 VariantKey variant_of(const Cell& cell);

@@ -9,12 +9,16 @@
 
 #include <nlohmann/json.hpp>
 
+#include "dpdrng/dpd/config.hpp"
+#include "dpdrng/rng/distribution.hpp"
+#include "dpdrng/rng/seeding.hpp"
+
 namespace dpdrng::study {
 
 struct GeneratorEntry {
   std::string name;
   std::vector<int> rounds;             // empty in TOML → the generator's default round count
-  std::vector<std::string> seedings;   // empty → the study's seedings
+  std::vector<rng::Seeding> seedings;  // empty → the study's seedings
 };
 
 // name = "water" (the paper's fluid) or "bilayer" (the H3(T6)2 membrane of dpd/bilayer.hpp: box, lipids and a_ij
@@ -34,7 +38,7 @@ struct SceneParams {
   // Simulated time instead of a step count (0: unused): each Δt then runs round(time / Δt) steps, of which
   // round(equilibrate_time / Δt) equilibrate, so that a Δt sweep compares runs of one physical length.
   double time = 0, equilibrate_time = 0;
-  std::string pairs = "all";
+  dpd::PairMode pairs = dpd::PairMode::all;
 
   bool is_bilayer() const { return name == "bilayer"; }
   long steps_at(double dt) const;
@@ -55,7 +59,7 @@ struct TestParams {
   long nist_sequences = 1000;
   long nist_bits = 1 << 20;
   std::vector<std::string> nist_generators;  // generators whose cells also get the NIST battery
-  std::vector<std::string> nist_distributions{"gauss"};
+  std::vector<rng::Distribution> nist_distributions{rng::Distribution::gauss};
   int nist_replicas = 1;      // only the first nist_replicas replicas: the outputs are the generator's either way
 };
 
@@ -70,11 +74,11 @@ struct StudyConfig {
   int replicas = 4;
   std::uint64_t seed = 1;
   std::vector<GeneratorEntry> generators;
-  std::vector<std::string> distributions{"gauss", "uniform"};
+  std::vector<rng::Distribution> distributions{rng::Distribution::gauss, rng::Distribution::uniform};
   // Which uniforms feed the Gaussian (rng::Feed); uniform noise always takes halves, so its cells are not
   // multiplied by the feeds.
-  std::vector<std::string> feeds{"halves"};
-  std::vector<std::string> seedings{"distance"};
+  std::vector<rng::Feed> feeds{rng::Feed::halves};
+  std::vector<rng::Seeding> seedings{rng::Seeding::distance};
   // [sweep] integrators ("mvv:<λ>", "shardlow"; sweep.hpp); empty: MVV at the scene's λ, not a factor.
   std::vector<std::string> integrators;
   SceneParams scene;

@@ -38,7 +38,7 @@ struct DecompConfig {
 
 // One run's observables.
 struct DecompRun {
-  std::string status = "ok";
+  dpd::RunStatus status;
   std::int64_t steps_done = 0;
   dpd::Stat temperature, pressure;
   double diffusion = 0, diffusion_sem = 0;

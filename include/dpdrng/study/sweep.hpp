@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "dpdrng/dpd/config.hpp"
+#include "dpdrng/rng/distribution.hpp"
+#include "dpdrng/rng/seeding.hpp"
 #include "dpdrng/study/config.hpp"
 
 namespace dpdrng::study {
@@ -22,12 +24,17 @@ IntegratorSpec parse_integrator_spec(const std::string& text);
 // The spec a cell runs: the named one, or MVV at the scene's λ for the empty name.
 IntegratorSpec integrator_of(const std::string& name, const SceneParams& scene);
 
+// The distribution with its feed when that is not halves: "gauss", "gauss-blocks", "uniform".
+std::string noise_name(rng::Distribution d, rng::Feed f);
+// The seeding's name, "stream" for the reference (the text stores and reports carry).
+std::string seeding_name(rng::Seeding s, bool reference);
+
 struct Cell {
   std::string generator;
   int rounds = 1;
-  std::string distribution;
-  std::string feed = "halves";  // rng::Feed; a store written without the field reads halves
-  std::string seeding;  // "stream" for the reference
+  rng::Distribution distribution = rng::Distribution::gauss;
+  rng::Feed feed = rng::Feed::halves;  // a store written without the field reads halves
+  rng::Seeding seeding = rng::Seeding::distance;  // unused by the reference, which draws from its stream
   double dt = 0.04;
   std::string integrator;  // [sweep] integrators entry; empty: MVV at the scene's λ (stores without the field)
   int replica = 0;
@@ -35,8 +42,8 @@ struct Cell {
   bool nist = false;  // this cell also feeds its outputs to the NIST battery
   std::uint64_t seed = 0;  // shared by all cells of one replica: paired comparisons start from the same state
 
-  // The distribution with its feed when that is not halves: "gauss", "gauss-blocks", "uniform".
-  std::string noise() const;
+  std::string noise() const;         // noise_name(distribution, feed)
+  std::string seeding_name() const;  // "stream" for the reference
   // e.g. "tea32-r01-gauss-distance-dt0.04-rep00", a valid file and group name; an integrator named by the sweep
   // follows the Δt ("…-dt0.04-mvv0.65-rep00").
   std::string id() const;
