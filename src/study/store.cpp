@@ -125,24 +125,31 @@ void write_file_atomically(const fs::path& path, const std::string& text) {
 
 fs::path Store::cell_path(const Cell& cell) const { return dir_ / "cells" / (cell.id() + ".h5"); }
 
-std::string Store::stored_hash() const {
-  const fs::path p = dir_ / "config.hash";
+std::string read_store_hash(const fs::path& dir) {
+  const fs::path p = dir / "config.hash";
   if (!fs::exists(p)) return "";
   std::string h = read_text(p);
   while (!h.empty() && (h.back() == '\n' || h.back() == ' ')) h.pop_back();
   return h;
 }
 
-void Store::open_for(const StudyConfig& config) {
-  const std::string existing = stored_hash();
-  if (!existing.empty() && existing != config.hash)
-    throw InputError(dir_.string() + " holds results of a different config (hash " + existing + ", this config " +
-                     config.hash + "): choose another --out, or delete the directory to start afresh");
-  fs::create_directories(dir_ / "cells");
+void open_store_directory(const fs::path& dir, const std::string& config_file, const std::string& source_text,
+                          const std::string& hash) {
+  const std::string existing = read_store_hash(dir);
+  if (!existing.empty() && existing != hash)
+    throw InputError(dir.string() + " holds results of a different config (hash " + existing + ", this config " +
+                     hash + "): choose another --out, or delete the directory to start afresh");
+  fs::create_directories(dir / "cells");
   if (existing.empty()) {
-    write_file_atomically(dir_ / "study.toml", config.source_text);
-    write_file_atomically(dir_ / "config.hash", config.hash + "\n");
+    write_file_atomically(dir / config_file, source_text);
+    write_file_atomically(dir / "config.hash", hash + "\n");
   }
+}
+
+std::string Store::stored_hash() const { return read_store_hash(dir_); }
+
+void Store::open_for(const StudyConfig& config) {
+  open_store_directory(dir_, "study.toml", config.source_text, config.hash);
 }
 
 StudyConfig Store::stored_config() const {
