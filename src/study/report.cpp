@@ -53,8 +53,11 @@ std::string csv_quote(const std::string& s) {
 
 std::string csv_line(const std::vector<std::string>& fields) {
   std::string line;
-  for (std::size_t i = 0; i < fields.size(); ++i) line += (i ? "," : "") + csv_quote(fields[i]);
-  return line + "\n";
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    if (i) line += ',';
+    line += csv_quote(fields[i]);
+  }
+  return line + '\n';
 }
 
 std::string cells_csv(const std::vector<CellResult>& cells) {
