@@ -3,8 +3,6 @@
 #include <bit>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 #include "dpdrng/common/error.hpp"
@@ -163,19 +161,11 @@ RandomnessCost randomness_of(const json& j) {
   return c;
 }
 
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot open it");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // The rows of a cell file, after checking its checksum, config hash and cell id; throws with the reason.
 std::vector<DecompResult> read_cell_file(const fs::path& p, const std::string& hash, const std::string& id) {
   json j;
   try {
-    j = json::parse(read_text(p));
+    j = json::parse(read_whole_file(p));
   } catch (const json::parse_error&) {
     throw std::runtime_error("not whole JSON (cut short or altered after it was written)");
   }

@@ -51,14 +51,6 @@ std::vector<fs::path> cell_files(const fs::path& dir) {
 constexpr std::size_t kSealBytes = 512;
 constexpr std::string_view kSealMagic = "dpdrng-cell 1 fnv1a64 ";
 
-std::string read_bytes(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot open it");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 std::string seal_of(std::string_view payload) {
   std::string seal = std::string(kSealMagic) + fnv1a64_hex(std::string(payload)) + " " +
                      std::to_string(payload.size()) + "\n";
@@ -67,7 +59,7 @@ std::string seal_of(std::string_view payload) {
 }
 
 void seal_file(const fs::path& p) {
-  const std::string bytes = read_bytes(p);
+  const std::string bytes = read_whole_file(p);
   if (bytes.size() <= kSealBytes) throw OutputError(p.string() + ": HDF5 wrote no data after the checksum block");
   std::fstream f(p, std::ios::binary | std::ios::in | std::ios::out);
   f.write(seal_of(std::string_view(bytes).substr(kSealBytes)).data(), static_cast<std::streamsize>(kSealBytes));
@@ -76,7 +68,7 @@ void seal_file(const fs::path& p) {
 
 // Throws with the reason when the file's bytes do not match its checksum block.
 void check_seal(const fs::path& p) {
-  const std::string bytes = read_bytes(p);
+  const std::string bytes = read_whole_file(p);
   if (bytes.size() < kSealBytes || bytes.compare(0, kSealMagic.size(), kSealMagic) != 0)
     throw std::runtime_error(bytes.size() >= 8 && bytes.compare(0, 4, "\x89HDF") == 0
                                  ? "no checksum block: written by an older dpdrng, or not by dpdrng"
@@ -111,6 +103,14 @@ fs::path temp_name(const fs::path& p) {
 }
 
 }  // namespace
+
+std::string read_whole_file(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot open it");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
 
 void write_file_atomically(const fs::path& path, const std::string& text) {
   const fs::path tmp = temp_name(path);

@@ -54,6 +54,9 @@ class Store {
   std::filesystem::path dir_;
 };
 
+// A cell file's bytes; std::runtime_error("cannot open it") when it cannot be read (the reason an unreadable cell
+// is listed with).
+std::string read_whole_file(const std::filesystem::path& p);
 // Writes `text` to `path` through a temporary file and a rename.
 void write_file_atomically(const std::filesystem::path& path, const std::string& text);
 
