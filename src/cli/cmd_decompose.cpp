@@ -22,7 +22,7 @@ struct DecomposeArgs {
   GeneratorOptions gen;
   study::DecompConfig cfg;
   bool no_reference = false, json = false, quiet = false;
-  std::string study, out = "results/decomposition";
+  std::string study, out = "results/decomposition", shard = "1/1";
 };
 
 void print_boundary(const char* title, const dpd::BoundaryStats& b) {
@@ -68,27 +68,45 @@ void print_human(const study::DecompResult& r) {
             << "  pairs sharing a word       " << c.duplicates_per_step << " / step\n";
 }
 
+// As `study run`: cells already stored are read back, not recomputed; the outputs are written from the store
+// once it holds every cell (the last shard to finish writes them).
 void run_study(const DecomposeArgs& a) {
   const study::DecompSweep sw = study::load_decomp_sweep(a.study);
-  prepare_output_directory(a.out, "--out");
-  study::SweepProgress progress;
+  study::DecompRunOptions o;
+  o.shard = study::parse_shard(a.shard);
+  o.progress = a.quiet ? nullptr : &std::cerr;
+  study::DecompStore store(a.out);
+  prepare_output_directory(store.dir(), "--out");
+  store.open_for(sw);
+  const std::size_t total = study::decomp_cells(sw).size();
   if (!a.quiet)
-    progress = [](std::size_t done, std::size_t total, const study::DecompResult& r) {
-      std::cerr << "[" << done << "/" << total << "] " << r.generator << " " << r.seeding << " " << r.domains << ": "
-                << 100 * r.decomposed.boundary.mismatch_fraction() << " % mismatched\n";
-    };
-  const auto rows = study::run_decomp_sweep(sw, progress);
+    std::cerr << "[decompose] " << sw.name << ": " << total << " cells (" << sw.domains.size()
+              << " domain grids each), shard " << o.shard.index << "/" << o.shard.count << ", into " << store.dir()
+              << "\n";
+  const study::DecompRunSummary s = study::run_decomp_sweep(sw, store, o);
+  std::vector<std::string> missing;
+  const auto rows = study::load_decomp_rows(sw, store, &missing);
+  if (!a.quiet)
+    std::cerr << "[decompose] done in " << s.seconds << " s: " << s.computed << " computed, " << s.resumed
+              << " resumed; " << total - missing.size() << " of " << total << " cells stored\n";
+  if (!missing.empty()) {
+    std::cerr << "[decompose] outputs are written once every cell is stored: run the other shards into "
+              << store.dir() << "\n";
+    return;
+  }
   const std::string md = study::write_decomp_outputs(sw, rows, a.out, a.quiet ? nullptr : &std::cerr);
-  nlohmann::json j = nlohmann::json::array();
-  for (const auto& r : rows) j.push_back(study::to_json(r));
-  if (a.json)
+  if (a.json) {
+    nlohmann::json j = nlohmann::json::array();
+    for (const auto& r : rows) j.push_back(study::to_json(r));
     std::cout << j.dump(2) << "\n";
-  else
+  } else {
     std::cout << md;
+  }
 }
 
 void run_decompose(DecomposeArgs& a) {
   if (!a.study.empty()) return run_study(a);
+  if (a.shard != "1/1") throw InputError("--shard: only with --study (a single check is one cell)");
   if (a.scene != "water") throw InputError("unknown scene '" + a.scene + "' (known: water)");
   study::DecompConfig cfg = a.cfg;
   cfg.domains = dpd::parse_domains(a.domains);
@@ -114,8 +132,11 @@ const bool registered = register_command(45, [](CLI::App& root) {
       "shifted by +-L in floating point ((x_j - L) - x_i on one side, x_j - (x_i + L) on the other), every\n"
       "boundary pair on both sides. Seedings: distance (the paper), pair-step, grid[:K] (separation rounded to\n"
       "2^-K, default 32, before hashing), canonical (min-image separation of the wrapped coordinates, which the\n"
-      "ghost must carry). Pairs inside r_c only (the ones that exert forces). --study FILE runs a sweep\n"
-      "(study/decomposition.toml) and writes table.md, table.csv and results.json under --out.");
+      "ghost must carry). Pairs inside r_c only (the ones that exert forces).\n"
+      "--study FILE runs a sweep (study/decomposition.toml) into --out as `study run` does: one file per\n"
+      "(generator, seeding, distribution) in cells/, written whole or not at all; a rerun reads the stored cells\n"
+      "back and computes the rest (an unreadable cell file is named and computed again); --shard k/N runs every\n"
+      "N-th cell. Once every cell is stored it writes table.md, table.csv, results.json and charts/ there.");
   auto& c = a->cfg;
   sub->add_option("--scene", a->scene, "scene: water")->capture_default_str();
   sub->add_option("--domains", a->domains, "domains per axis: 2 or 2,2,1")->capture_default_str();
@@ -136,7 +157,11 @@ const bool registered = register_command(45, [](CLI::App& root) {
               {0, kIntMax});
   sub->add_flag("--no-reference", a->no_reference, "skip the undecomposed run (and the randomness tests)");
   sub->add_option("--study", a->study, "sweep config (TOML), e.g. study/decomposition.toml")->check(non_empty_path());
-  sub->add_option("--out", a->out, "output directory of --study")->check(non_empty_path())->capture_default_str();
+  sub->add_option("--out", a->out, "output directory of --study (its store: rerun to resume)")
+      ->check(non_empty_path())
+      ->capture_default_str();
+  sub->add_option("--shard", a->shard, "k/N: run only every N-th cell of --study, starting at the k-th")
+      ->capture_default_str();
   sub->add_flag("--json", a->json, "machine-readable output");
   sub->add_flag("--quiet,-q", a->quiet, "no progress on stderr");
   sub->callback([a] { run_decompose(*a); });

@@ -6,6 +6,7 @@
 
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/rng/seeding_repair.hpp"
+#include "dpdrng/study/config.hpp"
 #include "dpdrng/study/decomposition_sweep.hpp"
 #include "toml_section.hpp"
 
@@ -29,6 +30,21 @@ void DecompConfig::validate() const {
   if (noise.seeding.kind == DecompSeedingKind::grid &&
       (noise.seeding.grid_bits < rng::kMinGridBits || noise.seeding.grid_bits > rng::kMaxGridBits))
     throw InputError("grid seeding: grid_bits out of range");
+}
+
+nlohmann::json DecompSweep::canonical() const {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& g : generators) j["generators"].push_back(rng::describe(g));
+  for (const auto& s : seedings) j["seedings"].push_back(to_string(s));
+  for (auto d : distributions) j["distributions"].push_back(std::string(rng::to_string(d)));
+  for (const auto& d : domains) j["domains"].push_back(to_string(d));
+  const WaterConfig& w = base.water;
+  j["scene"] = {{"particles", w.particles}, {"density", w.density}, {"a", w.a},   {"rc", w.rc},
+                {"kT", w.kT},               {"gamma", w.gamma},     {"lambda", w.lambda}, {"dt", w.dt},
+                {"steps", w.steps},         {"equilibrate", w.equilibrate}, {"init_seed", w.init_seed},
+                {"seed", base.noise.seed},  {"feed", std::string(rng::to_string(base.noise.feed))}};
+  j["tests"] = {{"chi2_every", base.chi2_every}, {"ttest_pairs", base.ttest_pairs}, {"alpha", base.alpha}};
+  return j;
 }
 
 // Out-of-range scene values are refused by DecompConfig::validate(), with the water scene's messages.
@@ -95,6 +111,8 @@ DecompSweep parse_decomp_sweep(const std::string& text, const std::string& origi
     c.validate();
     return 0;
   });
+  s.source_text = text;
+  s.hash = fnv1a64_hex(s.canonical().dump());
   return s;
 }
 

@@ -44,6 +44,22 @@ std::vector<std::string> distributions_of(const Analysis& a) {
 }
 
 // Every scalar of every cell, one row a cell: the flat view for spreadsheets.
+std::string csv_quote(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+std::string csv_line(const std::vector<std::string>& fields) {
+  std::string line;
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    if (i) line += ',';
+    line += csv_quote(fields[i]);
+  }
+  return line + '\n';
+}
+
 std::string cells_csv(const std::vector<CellResult>& cells) {
   std::set<std::string> names;
   for (const auto& c : cells)

@@ -54,7 +54,7 @@ bool render(const Chart& c, const fs::path& dir, bool run, std::ostream* log) {
     std::ostringstream d;
     d << "# " << l.title << "\n";
     for (std::size_t r = 0; r < l.rows.size(); ++r) {
-      for (double x : l.rows[r]) d << (std::isfinite(x) ? std::to_string(x) : std::string("nan")) << ' ';
+      for (double x : l.rows[r]) d << (std::isfinite(x) ? fmt("%.10g", x) : std::string("nan")) << ' ';
       if (r < l.labels.size()) d << q(l.labels[r]);
       d << '\n';
     }

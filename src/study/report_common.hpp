@@ -1,6 +1,6 @@
 #pragma once
-// Pieces the water report (report.cpp, report_tables.cpp) and the bilayer report (report_bilayer.cpp) share;
-// internal to src/study.
+// Pieces the water report (report.cpp, report_tables.cpp), the bilayer report (report_bilayer.cpp) and the
+// decomposition sweep's outputs (decomposition_report.cpp) share; internal to src/study.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -15,6 +15,8 @@ namespace dpdrng::study::detail {
 void write_text(const std::filesystem::path& p, const std::string& text);  // throws if it cannot
 std::string num(double x);                                                  // "%.6g", "" when not finite
 std::string fmt(const char* f, double x);                                   // printf format f, "–" when not finite
+std::string csv_quote(const std::string& s);                                 // RFC 4180 quoting where needed
+std::string csv_line(const std::vector<std::string>& fields);                // quoted fields, commas, '\n'
 std::string cells_csv(const std::vector<CellResult>& cells);                // every scalar of every cell
 // The distributions the analysis holds, in the order they first appear: one report section each.
 std::vector<std::string> distributions_of(const Analysis& a);

@@ -12,6 +12,7 @@ namespace {
 
 using detail::fmt;
 using detail::num;
+using detail::csv_quote;
 
 std::string pass_cell(const PassSummary& p) {
   if (!p.available || p.trials == 0) return "–";
@@ -44,13 +45,6 @@ std::string speed_vs_8(double at8_ms, double step_ms) {
   if (!std::isfinite(at8_ms) || !(step_ms > 0)) return "–";
   const double r = at8_ms / step_ms;
   return r >= 1 ? fmt("%.2f× faster", r) : fmt("%.2f× slower", 1 / r);
-}
-
-std::string csv_quote(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return q + "\"";
 }
 
 const char* kObservableNames[][2] = {

@@ -9,7 +9,6 @@
 #include <thread>
 
 namespace dpdrng::study {
-namespace {
 
 std::string format_duration(double s) {
   char buf[32];
@@ -21,8 +20,6 @@ std::string format_duration(double s) {
     std::snprintf(buf, sizeof buf, "%dh%02dm", int(s) / 3600, (int(s) % 3600) / 60);
   return buf;
 }
-
-}  // namespace
 
 RunSummary run_study(const StudyConfig& config, Store& store, const RunOptions& options, const MeasureFn& measure) {
   using clock = std::chrono::steady_clock;

@@ -51,14 +51,6 @@ std::vector<fs::path> cell_files(const fs::path& dir) {
 constexpr std::size_t kSealBytes = 512;
 constexpr std::string_view kSealMagic = "dpdrng-cell 1 fnv1a64 ";
 
-std::string read_bytes(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot open it");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 std::string seal_of(std::string_view payload) {
   std::string seal = std::string(kSealMagic) + fnv1a64_hex(std::string(payload)) + " " +
                      std::to_string(payload.size()) + "\n";
@@ -67,7 +59,7 @@ std::string seal_of(std::string_view payload) {
 }
 
 void seal_file(const fs::path& p) {
-  const std::string bytes = read_bytes(p);
+  const std::string bytes = read_whole_file(p);
   if (bytes.size() <= kSealBytes) throw OutputError(p.string() + ": HDF5 wrote no data after the checksum block");
   std::fstream f(p, std::ios::binary | std::ios::in | std::ios::out);
   f.write(seal_of(std::string_view(bytes).substr(kSealBytes)).data(), static_cast<std::streamsize>(kSealBytes));
@@ -76,7 +68,7 @@ void seal_file(const fs::path& p) {
 
 // Throws with the reason when the file's bytes do not match its checksum block.
 void check_seal(const fs::path& p) {
-  const std::string bytes = read_bytes(p);
+  const std::string bytes = read_whole_file(p);
   if (bytes.size() < kSealBytes || bytes.compare(0, kSealMagic.size(), kSealMagic) != 0)
     throw std::runtime_error(bytes.size() >= 8 && bytes.compare(0, 4, "\x89HDF") == 0
                                  ? "no checksum block: written by an older dpdrng, or not by dpdrng"
@@ -112,6 +104,14 @@ fs::path temp_name(const fs::path& p) {
 
 }  // namespace
 
+std::string read_whole_file(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot open it");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
 void write_file_atomically(const fs::path& path, const std::string& text) {
   const fs::path tmp = temp_name(path);
   {
@@ -125,24 +125,31 @@ void write_file_atomically(const fs::path& path, const std::string& text) {
 
 fs::path Store::cell_path(const Cell& cell) const { return dir_ / "cells" / (cell.id() + ".h5"); }
 
-std::string Store::stored_hash() const {
-  const fs::path p = dir_ / "config.hash";
+std::string read_store_hash(const fs::path& dir) {
+  const fs::path p = dir / "config.hash";
   if (!fs::exists(p)) return "";
   std::string h = read_text(p);
   while (!h.empty() && (h.back() == '\n' || h.back() == ' ')) h.pop_back();
   return h;
 }
 
-void Store::open_for(const StudyConfig& config) {
-  const std::string existing = stored_hash();
-  if (!existing.empty() && existing != config.hash)
-    throw InputError(dir_.string() + " holds results of a different config (hash " + existing + ", this config " +
-                     config.hash + "): choose another --out, or delete the directory to start afresh");
-  fs::create_directories(dir_ / "cells");
+void open_store_directory(const fs::path& dir, const std::string& config_file, const std::string& source_text,
+                          const std::string& hash) {
+  const std::string existing = read_store_hash(dir);
+  if (!existing.empty() && existing != hash)
+    throw InputError(dir.string() + " holds results of a different config (hash " + existing + ", this config " +
+                     hash + "): choose another --out, or delete the directory to start afresh");
+  fs::create_directories(dir / "cells");
   if (existing.empty()) {
-    write_file_atomically(dir_ / "study.toml", config.source_text);
-    write_file_atomically(dir_ / "config.hash", config.hash + "\n");
+    write_file_atomically(dir / config_file, source_text);
+    write_file_atomically(dir / "config.hash", hash + "\n");
   }
+}
+
+std::string Store::stored_hash() const { return read_store_hash(dir_); }
+
+void Store::open_for(const StudyConfig& config) {
+  open_store_directory(dir_, "study.toml", config.source_text, config.hash);
 }
 
 StudyConfig Store::stored_config() const {

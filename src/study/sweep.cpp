@@ -127,10 +127,12 @@ Shard parse_shard(const std::string& text) {
   return s;
 }
 
+bool in_shard(std::size_t i, Shard shard) { return static_cast<int>(i % std::size_t(shard.count)) == shard.index - 1; }
+
 std::vector<Cell> select_shard(const std::vector<Cell>& cells, Shard shard) {
   std::vector<Cell> out;
   for (std::size_t i = 0; i < cells.size(); ++i)
-    if (static_cast<int>(i % std::size_t(shard.count)) == shard.index - 1) out.push_back(cells[i]);
+    if (in_shard(i, shard)) out.push_back(cells[i]);
   return out;
 }
 

@@ -203,10 +203,18 @@ TEST(Golden, BilayerStudyCells) {
   check("bilayer.digest", study_cells("bilayer.toml"), true, "tests/golden/bilayer.toml's cells");
 }
 
+// The sweep as `dpdrng decompose --study CONFIG` does it, every row read back from the stored cell files.
 TEST(Golden, DecompositionSweep) {
   const study::DecompSweep sweep = study::load_decomp_sweep(source("decomposition.toml"));
+  TempDir dir;
+  study::DecompStore store(dir.path / "out");
+  store.open_for(sweep);
+  study::run_decomp_sweep(sweep, store, {});
+  std::vector<std::string> missing;
+  const auto rows = study::load_decomp_rows(sweep, store, &missing);
+  EXPECT_TRUE(missing.empty());
   Runs runs;
-  for (const auto& r : study::run_decomp_sweep(sweep)) {
+  for (const auto& r : rows) {
     const std::string name = r.generator + "/" + r.seeding + "/" + r.distribution + "/" + r.domains;
     EXPECT_FALSE(runs.count(name)) << name;
     flatten(study::to_json(r), "", runs[name], [](const std::string& path) {

@@ -11,6 +11,7 @@
 #include "dpdrng/study/decomposition_sweep.hpp"
 #include "../cli/run_cli.hpp"
 #include "../dpd/scale.hpp"
+#include "../temp_dir.hpp"
 
 namespace dpdrng::study {
 namespace {
@@ -122,21 +123,30 @@ TEST(DecompositionSweep, RunsAndWritesItsTable) {
   text.replace(text.find("rounds = [1, 8]"), 15, "rounds = [8]");
   text.replace(text.find("name = \"philox4x32\""), 19, "name = \"tea64\"");
   const DecompSweep s = parse_decomp_sweep(text, "<test>");
-  const auto rows = run_decomp_sweep(s);
+  TempDir dir;
+  DecompStore store(dir.path / "store");
+  store.open_for(s);
+  const DecompRunSummary sum = run_decomp_sweep(s, store, {});
+  EXPECT_EQ(sum.computed, 4u);
+  std::vector<std::string> missing;
+  const auto rows = load_decomp_rows(s, store, &missing);
+  EXPECT_TRUE(missing.empty());
   ASSERT_EQ(rows.size(), 8u);
   for (const auto& r : rows) EXPECT_TRUE(r.has_reference) << r.generator << " " << r.seeding << " " << r.domains;
   // The second grid reuses the first one's undecomposed run.
   EXPECT_EQ(rows[0].reference.temperature.mean, rows[1].reference.temperature.mean);
-  const auto dir = std::filesystem::temp_directory_path() / ("dpdrng_decomp_" + std::to_string(getpid()));
-  const std::string md = write_decomp_outputs(s, rows, dir.string(), nullptr);
+  EXPECT_EQ(rows[0].domains, "2x1x1");
+  EXPECT_EQ(rows[1].domains, "2x2x1");
+  const std::string md = write_decomp_outputs(s, rows, (dir.path / "out").string(), nullptr);
   EXPECT_NE(md.find(" | grid:20 | 2x2x1 |"), std::string::npos) << md;
-  EXPECT_TRUE(std::filesystem::exists(dir / "table.csv"));
-  EXPECT_TRUE(std::filesystem::exists(dir / "decomposition_2x2x1.gp"));
-  std::ifstream csv(dir / "table.csv");
-  std::string header;
+  EXPECT_TRUE(std::filesystem::exists(dir.path / "out" / "charts" / "mismatch_2x2x1.gp"));
+  EXPECT_TRUE(std::filesystem::exists(dir.path / "out" / "charts" / "drift_2x1x1.gp"));
+  std::ifstream csv(dir.path / "out" / "table.csv");
+  std::string header, first;
   std::getline(csv, header);
+  std::getline(csv, first);
   EXPECT_EQ(header.rfind("generator,seeding,distribution,domains", 0), 0u);
-  std::filesystem::remove_all(dir);
+  EXPECT_EQ(first.rfind("tea32(8),distance,gauss,2x1x1,256,30,ok,", 0), 0u) << first;
 }
 
 }  // namespace

@@ -32,6 +32,8 @@ struct RunSummary {
   double seconds = 0;
 };
 
+std::string format_duration(double seconds);  // "42s", "3m05s", "2h10m": the ETA of progress lines
+
 RunSummary run_study(const StudyConfig& config, Store& store, const RunOptions& options, const MeasureFn& measure);
 
 }  // namespace dpdrng::study

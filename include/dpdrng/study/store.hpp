@@ -54,7 +54,16 @@ class Store {
   std::filesystem::path dir_;
 };
 
+// A cell file's bytes; std::runtime_error("cannot open it") when it cannot be read (the reason an unreadable cell
+// is listed with).
+std::string read_whole_file(const std::filesystem::path& p);
 // Writes `text` to `path` through a temporary file and a rename.
 void write_file_atomically(const std::filesystem::path& path, const std::string& text);
+
+// The directory layout every store shares: dir/cells/, the config's text as dir/<config_file> and its hash in
+// dir/config.hash. Creates it, or checks that an existing one was made with the same hash (InputError if not).
+void open_store_directory(const std::filesystem::path& dir, const std::string& config_file,
+                          const std::string& source_text, const std::string& hash);
+std::string read_store_hash(const std::filesystem::path& dir);  // "" when the directory has none
 
 }  // namespace dpdrng::study

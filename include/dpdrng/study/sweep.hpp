@@ -57,6 +57,7 @@ struct Shard {
 };
 Shard parse_shard(const std::string& text);  // "k/N"; InputError otherwise
 // Round-robin over the canonical order, so every shard gets a mix of cheap and expensive cells.
+bool in_shard(std::size_t index, Shard shard);  // index: 0-based position in the canonical order
 std::vector<Cell> select_shard(const std::vector<Cell>& cells, Shard shard);
 
 }  // namespace dpdrng::study
