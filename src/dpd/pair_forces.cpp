@@ -1,7 +1,8 @@
-// The one place where the run-time noise choice becomes a noise kernel for the pair loop (hash families in their
-// own files).
+// The one place where the run-time noise choice becomes a noise kernel for the pair loop (the keyed hashes'
+// kernels in their families' files, pair_forces_make.hpp).
 #include <cmath>
 
+#include "noise_kernel.hpp"
 #include "pair_forces_make.hpp"
 
 namespace dpdrng::dpd {
@@ -23,6 +24,13 @@ std::unique_ptr<PairForces> loop(Noise noise, const WaterConfig& cfg, const DpdK
   return make_pair_loop(make_noise_kernel(std::move(noise)), kernel, cfg.pairs, cfg.threads, n, cfg.taps.pairs);
 }
 
+template <rng::Family F>
+std::unique_ptr<PairForces> hashed(const WaterConfig& cfg, const DpdKernel& kernel, std::size_t n) {
+  if (cfg.seeding == rng::Seeding::distance) return detail::make_hashed<F, rng::Seeding::distance>(cfg, kernel, n);
+  if (cfg.seeding == rng::Seeding::pair_step) return detail::make_hashed<F, rng::Seeding::pair_step>(cfg, kernel, n);
+  rng::throw_counter_not_pair_seeding();
+}
+
 template <rng::Distribution D>
 std::unique_ptr<PairForces> baseline_or_stream(const WaterConfig& cfg, const DpdKernel& kernel, std::size_t n) {
   if (cfg.noise_override == NoiseOverride::none) return loop(ZeroNoise{}, cfg, kernel, n);
@@ -41,13 +49,15 @@ std::unique_ptr<PairForces> make_pair_forces(const WaterConfig& in, const DpdKer
     return gauss ? baseline_or_stream<rng::Distribution::gauss>(cfg, kernel, n)
                  : baseline_or_stream<rng::Distribution::uniform>(cfg, kernel, n);
   switch (family) {
-    case rng::Family::tea32: return detail::make_tea32(cfg, kernel, n);
-    case rng::Family::tea64: return detail::make_tea64(cfg, kernel, n);
-    case rng::Family::philox4x32:
-    case rng::Family::threefry2x64: return detail::make_random123(cfg, kernel, n);
-    case rng::Family::splitmix64: return detail::make_splitmix(cfg, kernel, n);
-    case rng::Family::saru: return detail::make_saru(cfg, kernel, n);
-    case rng::Family::defect: return detail::make_defect(cfg, kernel, n);
+    case rng::Family::tea32: return hashed<rng::Family::tea32>(cfg, kernel, n);
+    case rng::Family::tea64: return hashed<rng::Family::tea64>(cfg, kernel, n);
+    case rng::Family::philox4x32: return hashed<rng::Family::philox4x32>(cfg, kernel, n);
+    case rng::Family::threefry2x64: return hashed<rng::Family::threefry2x64>(cfg, kernel, n);
+    case rng::Family::splitmix64: return hashed<rng::Family::splitmix64>(cfg, kernel, n);
+    case rng::Family::saru: return hashed<rng::Family::saru>(cfg, kernel, n);
+    case rng::Family::defect:
+      rng::check_defect_seeding(cfg.generator, cfg.seeding);
+      return hashed<rng::Family::defect>(cfg, kernel, n);
     case rng::Family::mt19937: break;
   }
   rng::throw_not_keyed_hash(cfg.generator.name);

@@ -1,14 +1,12 @@
-#include "pair_forces_make.hpp"
+#include "dpdrng/rng/defect.hpp"
+#include "pair_forces_family.hpp"
 
 namespace dpdrng::dpd::detail {
 
 // One instantiation per seeding × distribution: the defect's size is a run-time parameter of the generator.
-std::unique_ptr<PairForces> make_defect(const WaterConfig& cfg, const DpdKernel& kernel, std::size_t n) {
-  rng::check_defect_seeding(cfg.generator, cfg.seeding);
-  rng::Defect gen;
-  gen.key = cfg.generator.key;
-  gen.p = rng::parse_defect(cfg.generator.name);
-  return make_for_generator(gen, cfg, kernel, n);
-}
+template std::unique_ptr<PairForces> make_hashed<rng::Family::defect, rng::Seeding::distance>(
+    const WaterConfig&, const DpdKernel&, std::size_t);
+template std::unique_ptr<PairForces> make_hashed<rng::Family::defect, rng::Seeding::pair_step>(
+    const WaterConfig&, const DpdKernel&, std::size_t);
 
 }  // namespace dpdrng::dpd::detail

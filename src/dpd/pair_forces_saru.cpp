@@ -1,11 +1,11 @@
-#include "pair_forces_make.hpp"
+#include "dpdrng/rng/saru.hpp"
+#include "pair_forces_family.hpp"
 
 namespace dpdrng::dpd::detail {
 
-std::unique_ptr<PairForces> make_saru(const WaterConfig& cfg, const DpdKernel& kernel, std::size_t n) {
-  // key[0] enters the distance seeding
-  return rng::with_family_hash<rng::Family::saru>(
-      cfg.generator, [&](const auto& gen) { return make_for_generator(gen, cfg, kernel, n); });
-}
+template std::unique_ptr<PairForces> make_hashed<rng::Family::saru, rng::Seeding::distance>(
+    const WaterConfig&, const DpdKernel&, std::size_t);
+template std::unique_ptr<PairForces> make_hashed<rng::Family::saru, rng::Seeding::pair_step>(
+    const WaterConfig&, const DpdKernel&, std::size_t);
 
 }  // namespace dpdrng::dpd::detail

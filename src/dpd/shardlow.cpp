@@ -8,7 +8,7 @@
 
 #include "dpdrng/rng/distribution.hpp"
 #include "dpdrng/rng/mt.hpp"
-#include "dpdrng/rng/registry.hpp"
+#include "dpdrng/rng/dispatch.hpp"
 
 namespace dpdrng::dpd {
 

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "dpdrng/common/error.hpp"
+#include "dpdrng/rng/defect.hpp"
 
 namespace dpdrng::rng {
 

@@ -5,6 +5,8 @@
 #include <bit>
 
 #include "dpdrng/rng/batch.hpp"
+#include "dpdrng/rng/dispatch.hpp"
+#include "dpdrng/rng/mt.hpp"
 #include "dpdrng/rng/simd.hpp"
 
 namespace dpdrng::rng {

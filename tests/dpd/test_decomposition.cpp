@@ -10,6 +10,7 @@
 #include "dpdrng/dpd/decomposition.hpp"
 #include "dpdrng/dpd/pair_forces.hpp"
 #include "dpdrng/rng/seeding_repair.hpp"
+#include "dpdrng/rng/tea.hpp"
 
 namespace dpdrng::dpd {
 namespace {

@@ -6,6 +6,7 @@
 
 #include "dpdrng/dpd/pair_loop.hpp"
 #include "dpdrng/dpd/water.hpp"
+#include "dpdrng/rng/dispatch.hpp"
 #include "scale.hpp"
 
 using namespace dpdrng;

@@ -11,6 +11,7 @@
 
 #include "dpdrng/dpd/shardlow.hpp"
 #include "dpdrng/dpd/water.hpp"
+#include "dpdrng/rng/dispatch.hpp"
 #include "scale.hpp"
 
 using namespace dpdrng;

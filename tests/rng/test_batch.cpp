@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "dpdrng/rng/batch.hpp"
+#include "dpdrng/rng/dispatch.hpp"
+#include "dpdrng/rng/mt.hpp"
 #include "dpdrng/rng/stream.hpp"
 
 using namespace dpdrng::rng;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "dpdrng/common/error.hpp"
+#include "dpdrng/rng/dispatch.hpp"
 #include "dpdrng/rng/registry.hpp"
 #include "dpdrng/rng/stream.hpp"
 

@@ -7,6 +7,7 @@
 #include <limits>
 #include <vector>
 
+#include "dpdrng/rng/dispatch.hpp"
 #include "dpdrng/rng/registry.hpp"
 #include "dpdrng/rng/stream.hpp"
 

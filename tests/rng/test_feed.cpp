@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "dpdrng/common/error.hpp"
+#include "dpdrng/rng/dispatch.hpp"
 #include "dpdrng/rng/registry.hpp"
 
 namespace dpdrng::rng {

@@ -3,6 +3,7 @@
 
 #include <type_traits>
 
+#include "dpdrng/rng/dispatch.hpp"
 #include "dpdrng/rng/registry.hpp"
 
 using namespace dpdrng::rng;

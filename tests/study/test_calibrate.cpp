@@ -8,6 +8,7 @@
 #include <iterator>
 
 #include "dpdrng/common/error.hpp"
+#include "dpdrng/rng/defect.hpp"
 #include "dpdrng/rng/registry.hpp"
 #include "dpdrng/stats/binomial.hpp"
 #include "dpdrng/study/calibrate.hpp"

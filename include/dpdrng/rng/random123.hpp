@@ -8,7 +8,7 @@
 #include <bit>
 #include <cstdint>
 
-#include "dpdrng/rng/tea.hpp"
+#include "dpdrng/rng/key.hpp"
 #include "dpdrng/rng/words.hpp"
 
 namespace dpdrng::rng {

@@ -7,15 +7,26 @@
 #include <string_view>
 #include <utility>
 
-#include "dpdrng/rng/defect.hpp"
-#include "dpdrng/rng/mt.hpp"
-#include "dpdrng/rng/random123.hpp"
-#include "dpdrng/rng/saru.hpp"
+#include "dpdrng/rng/key.hpp"
 #include "dpdrng/rng/seeding.hpp"
-#include "dpdrng/rng/splitmix.hpp"
-#include "dpdrng/rng/tea.hpp"
 
 namespace dpdrng::rng {
+
+// The keyed hashes, declared only: naming a family here compiles none of them. A caller of with_family_hash<F>
+// includes F's generator header; with_hash (dispatch.hpp) includes them all.
+template <int R>
+struct Tea32;
+template <int R>
+struct Tea64;
+template <int R>
+struct Philox4x32;
+template <int R>
+struct Threefry2x64;
+struct SplitMix64;
+struct Saru;
+struct Defect;
+struct DefectParams;
+DefectParams parse_defect(std::string_view name);
 
 // The generator families. mt19937 is the reference stream, not a keyed hash.
 enum class Family { tea32, tea64, philox4x32, threefry2x64, splitmix64, saru, defect, mt19937 };
@@ -111,16 +122,18 @@ decltype(auto) dispatch_rounds(const GeneratorSpec& s, Rounds<Rs...>, F&& f) {
   return dispatch_rounds<G, Rs...>(s, std::forward<F>(f));
 }
 
+// The defect's parameters are in its name.
 template <class G, class F>
 decltype(auto) keyed(const GeneratorSpec& s, F&& f) {
   G g;
   g.key = s.key;
+  if constexpr (requires { g.p; }) g.p = parse_defect(s.name);
   return f(g);
 }
 }  // namespace detail
 
-// Calls f(generator) with a concrete keyed-hash type of the family; its compiled round counts are
-// compile-time constants, any other count runs the runtime-rounds instantiation.
+// Calls f(generator) with a concrete keyed-hash type of the family (whose generator header the caller includes);
+// its compiled round counts are compile-time constants, any other count runs the runtime-rounds instantiation.
 template <Family Fam, class F>
 decltype(auto) with_family_hash(const GeneratorSpec& s, F&& f) {
   if constexpr (Fam == Family::tea32)
@@ -137,47 +150,8 @@ decltype(auto) with_family_hash(const GeneratorSpec& s, F&& f) {
     return detail::keyed<Saru>(s, std::forward<F>(f));
   else {
     static_assert(Fam == Family::defect, "mt19937 is not a keyed hash");
-    Defect g;
-    g.key = s.key;
-    g.p = parse_defect(s.name);
-    return f(g);
+    return detail::keyed<Defect>(s, std::forward<F>(f));
   }
 }
-
-// Calls f(generator) with a concrete keyed-hash type chosen by the spec's family. mt19937 is not a keyed hash:
-// InputError.
-template <class F>
-decltype(auto) with_hash(const GeneratorSpec& s, F&& f) {
-  switch (family_of(s.name)) {
-    case Family::tea32: return with_family_hash<Family::tea32>(s, std::forward<F>(f));
-    case Family::tea64: return with_family_hash<Family::tea64>(s, std::forward<F>(f));
-    case Family::philox4x32: return with_family_hash<Family::philox4x32>(s, std::forward<F>(f));
-    case Family::threefry2x64: return with_family_hash<Family::threefry2x64>(s, std::forward<F>(f));
-    case Family::splitmix64: return with_family_hash<Family::splitmix64>(s, std::forward<F>(f));
-    case Family::saru: return with_family_hash<Family::saru>(s, std::forward<F>(f));
-    case Family::defect: return with_family_hash<Family::defect>(s, std::forward<F>(f));
-    case Family::mt19937: break;
-  }
-  throw_not_keyed_hash(s.name);
-}
-
-// Calls f(PairNoise<G, S, D>) for a keyed hash, a pair seeding and a distribution chosen at run time; the feed
-// is the noise's run-time field.
-template <class F>
-decltype(auto) with_pair_noise(const GeneratorSpec& s, Seeding seeding, Distribution dist, std::uint64_t seed,
-                               F&& f, Feed feed = Feed::halves) {
-  check_feed(dist, feed);
-  return with_hash(s, [&](const auto& gen) -> decltype(auto) {
-    using G = std::decay_t<decltype(gen)>;
-    auto with_dist = [&]<Seeding S>() -> decltype(auto) {
-      if (dist == Distribution::gauss) return f(PairNoise<G, S, Distribution::gauss>{gen, seed, feed});
-      return f(PairNoise<G, S, Distribution::uniform>{gen, seed, feed});
-    };
-    if (seeding == Seeding::distance) return with_dist.template operator()<Seeding::distance>();
-    if (seeding == Seeding::pair_step) return with_dist.template operator()<Seeding::pair_step>();
-    throw_counter_not_pair_seeding();
-  });
-}
-
 
 }  // namespace dpdrng::rng

@@ -12,7 +12,7 @@
 #include <bit>
 #include <cstdint>
 
-#include "dpdrng/rng/tea.hpp"
+#include "dpdrng/rng/key.hpp"
 #include "dpdrng/rng/words.hpp"
 
 namespace dpdrng::rng {

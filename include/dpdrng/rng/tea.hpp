@@ -4,13 +4,12 @@
 #include <bit>
 #include <cstdint>
 
+#include "dpdrng/rng/key.hpp"
 #include "dpdrng/rng/words.hpp"
 
 namespace dpdrng::rng {
 
 inline constexpr std::uint32_t kTeaDelta = 0x9E3779B9u;
-using TeaKey = std::array<std::uint32_t, 4>;
-inline constexpr TeaKey kPaperTeaKey{3, 4, 5, 6};
 
 // One Feistel cycle on words of type W; the paper uses the same shifts, delta and key for 64-bit words.
 template <class W>

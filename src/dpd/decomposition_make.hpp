@@ -1,0 +1,15 @@
+#pragma once
+// Internal to src/dpd: the decomposed forces of one keyed-hash family, explicitly instantiated per family in the
+// decomposition_<family> files (decomposition_family.hpp has the definition).
+#include <memory>
+
+#include "dpdrng/dpd/decomposition.hpp"
+#include "dpdrng/rng/registry.hpp"
+
+namespace dpdrng::dpd::detail {
+
+template <rng::Family F>
+std::unique_ptr<DecomposedForces> make_decomposed(const rng::GeneratorSpec& spec, const DecompNoise& noise,
+                                                  const DpdKernel& kernel, const DomainGrid& domains);
+
+}  // namespace dpdrng::dpd::detail
