@@ -199,10 +199,7 @@ BilayerResult run_bilayer(const BilayerConfig& in, const RunHooks& hooks) {
         return step <= cfg.warmup ? vv_warm.step(s, force_warm) : vv_main.step(s, force_main);
       },
       obs, hooks);
-  r.status = run.status;
-  r.steps_done = run.steps_done;
-  r.momentum_drift = run.momentum_drift;
-  r.momentum_final = run.momentum_final;
+  put_scene_run(r, run);
   obs.finish(run);
 
   // As the water scene does, scaled by the pair forces' share of the run (the bonded forces and observables are

@@ -147,10 +147,7 @@ RunResult run_water(const WaterConfig& in, const RunHooks& hooks) {
         return vv.step(s, force);
       },
       obs, hooks);
-  r.status = run.status;
-  r.steps_done = run.steps_done;
-  r.momentum_drift = run.momentum_drift;
-  r.momentum_final = run.momentum_final;
+  put_scene_run(r, run);
   obs.finish(s);
   r.timings = scene_timings(run, counted, limits, *pair, pair_force_config(cfg), kernel, s,
                             cfg.noise_override == NoiseOverride::off, cfg.threads);

@@ -76,6 +76,15 @@ SceneRun run_scene(System& s, const SceneLimits& limits, const std::function<For
                    const std::function<ForceSums(std::int64_t step)>& advance, SceneObserver& observer,
                    const RunHooks& hooks = {});
 
+// A scene result's share of the loop's outcome: status, steps done, momentum drift and final momentum.
+template <class Result>
+void put_scene_run(Result& r, const SceneRun& run) {
+  r.status = run.status;
+  r.steps_done = run.steps_done;
+  r.momentum_drift = run.momentum_drift;
+  r.momentum_final = run.momentum_final;
+}
+
 // "unstable at step k: why".
 std::string unstable_at(std::int64_t step, const std::string& why);
 
