@@ -50,7 +50,8 @@ void print_human(const dpd::BilayerResult& r) {
             << "  without bond virial  " << pm(r.tension_without_bond_virial) << "\n"
             << "  without bend virial  " << pm(r.tension_without_bend_virial) << "\n"
             << "thickness (H peaks)    " << pm(r.thickness) << "   head separation " << pm(r.head_separation) << "\n"
-            << "tail order P2          " << pm(r.tail_order) << "\n"
+            << "tail order P2          " << pm(r.tail_order) << " (T-T bonds against z)   nematic S "
+            << pm(r.nematic_order) << " (lipid axes)\n"
             << "lipids out (max)       " << r.lipids_out_max << "\n"
             << "momentum drift / bead  " << r.momentum_drift << "\n"
             << "time                   " << r.timings.total_s << " s (" << 1e3 * r.timings.per_step_s

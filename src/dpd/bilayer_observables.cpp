@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include <Eigen/Eigenvalues>
+
 namespace dpdrng::dpd {
 
 namespace {
@@ -68,6 +70,36 @@ TailOrder tail_order(const System& s, std::size_t lipids) {
   for (auto& v : t.by_bond) v /= 2.0 * double(lipids), sum += v;
   t.mean = sum / double(t.by_bond.size());
   return t;
+}
+
+std::vector<std::array<double, 3>> lipid_axes(const System& s, std::size_t lipids) {
+  const auto& L = s.box.L;
+  std::vector<std::array<double, 3>> axes;
+  axes.reserve(lipids);
+  for (std::size_t l = 0; l < lipids; ++l) {
+    const std::size_t i = l * kLipidBeads, j = i + kTailA + kTailLength - 1;
+    axes.push_back({min_image(s.x[j] - s.x[i], L[0], 0.5 * L[0]), min_image(s.y[j] - s.y[i], L[1], 0.5 * L[1]),
+                    min_image(s.z[j] - s.z[i], L[2], 0.5 * L[2])});
+  }
+  return axes;
+}
+
+double nematic_order(const std::vector<std::array<double, 3>>& axes) {
+  Eigen::Matrix3d Q = Eigen::Matrix3d::Zero();
+  std::size_t used = 0;
+  for (const auto& u : axes) {
+    const double r2 = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
+    if (!(r2 > 0)) continue;
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) Q(a, b) += 1.5 * u[a] * u[b] / r2;
+    ++used;
+  }
+  if (used == 0) return 0.0;
+  Q /= double(used);
+  Q.diagonal().array() -= 0.5;
+  // Q is symmetric: its eigenvalues come out in increasing order.
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(Q, Eigen::EigenvaluesOnly);
+  return eig.eigenvalues()(2);
 }
 
 double peak_position(const std::vector<double>& z, const std::vector<double>& y, double lo, double hi) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "dpdrng/dpd/line_fit.hpp"
 #include "dpdrng/dpd/neighbours.hpp"
 
 namespace dpdrng::dpd {
@@ -131,11 +132,7 @@ void MsdRecorder::sample(const System& s) {
 namespace {
 // Least-squares slope of y against x over [lo, hi).
 double slope(const std::vector<double>& x, const std::vector<double>& y, std::size_t lo, std::size_t hi) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const double m = double(hi - lo);
-  for (std::size_t k = lo; k < hi; ++k) sx += x[k], sy += y[k], sxx += x[k] * x[k], sxy += x[k] * y[k];
-  const double den = m * sxx - sx * sx;
-  return den > 0 ? (m * sxy - sx * sy) / den : 0.0;
+  return fit_line(std::span(x).subspan(lo, hi - lo), std::span(y).subspan(lo, hi - lo)).slope;
 }
 }  // namespace
 

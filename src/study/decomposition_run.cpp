@@ -1,12 +1,12 @@
 #include "dpdrng/study/decomposition_run.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/dpd/integrator.hpp"
 #include "dpdrng/dpd/observables.hpp"
+#include "dpdrng/dpd/scene.hpp"
 #include "dpdrng/rng/distribution.hpp"
 #include "dpdrng/rng/seeding_repair.hpp"
 #include "dpdrng/stats/chi2.hpp"
@@ -19,7 +19,6 @@ using namespace dpdrng::dpd;
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
 
 // The randomness taps of one run: every pair's word 0 at sampled steps, and the tapped pairs' series.
 struct Tapper {
@@ -81,6 +80,51 @@ struct Tapper {
   }
 };
 
+// T and P from the total kinetic energy on every production step, the MSD, and the reference run's noise taps.
+class DecompObserver : public SceneObserver {
+ public:
+  DecompObserver(const DecompConfig& cfg, const System& s, Tapper* tap)
+      : cfg_(cfg), tap_(tap), n_(s.size()), V_(s.box.volume()), msd_every_(msd_interval(cfg.water, n_)),
+        msd_(n_, msd_every_ * cfg.water.dt, max_frames(n_)) {}
+
+  void sample(const StepSums& x, const System& s) override {
+    if (!x.production) return;
+    const ForceSums& f = *x.forces;
+    const std::int64_t k = x.step - cfg_.water.equilibrate - 1;
+    const double kin = s.kinetic_twice();
+    T_.push_back(kin / (3.0 * n_ - 3.0));
+    P_.push_back((kin + f.virial[0] + f.virial[1] + f.virial[2]) / (3.0 * V_));
+    if (k % msd_every_ == 0) msd_.sample(s);
+    if (!tap_) return;
+    const auto step = static_cast<std::uint64_t>(x.step);
+    if (cfg_.chi2_every > 0 && k % cfg_.chi2_every == 0) tap_->sample_step(s, step);
+    if (cfg_.ttest_pairs > 0) tap_->sample_series(s, step);
+  }
+
+  void finish(DecompRun& r) const {
+    r.temperature = make_stat(T_);
+    r.pressure = make_stat(P_);
+    const Msd m = msd_.finish();
+    r.diffusion = m.diffusion, r.diffusion_sem = m.diffusion_sem;
+  }
+
+ private:
+  static std::size_t max_frames(std::size_t n) { return std::max<std::size_t>(1, (std::size_t{1} << 24) / (3 * n)); }
+  static int msd_interval(const WaterConfig& w, std::size_t n) {
+    const std::int64_t production = w.steps - w.equilibrate;
+    return static_cast<int>(std::max<std::int64_t>(w.msd_every > 0 ? w.msd_every : w.sample_every,
+                                                   (production + max_frames(n) - 1) / max_frames(n)));
+  }
+
+  const DecompConfig& cfg_;
+  Tapper* tap_;
+  const std::size_t n_;
+  const double V_;
+  const int msd_every_;
+  MsdRecorder msd_;
+  std::vector<double> T_, P_;
+};
+
 DecompRun run_one(const DecompConfig& cfg, const DomainGrid& grid, BoundaryStats* first, Tapper* tap) {
   const WaterConfig& w = cfg.water;
   const std::size_t n = static_cast<std::size_t>(w.particles);
@@ -105,52 +149,25 @@ DecompRun run_one(const DecompConfig& cfg, const DomainGrid& grid, BoundaryStats
   Tapper* t = tap;
   if (t) t->step_words.reserve(std::size_t(w.steps / std::max(1, cfg.chi2_every) + 1) * n * (n - 1) / 2);
 
-  const std::int64_t production = w.steps - w.equilibrate;
-  const std::size_t max_frames = std::max<std::size_t>(1, (std::size_t{1} << 24) / (3 * n));
-  const int msd_every = static_cast<int>(
-      std::max<std::int64_t>(w.msd_every > 0 ? w.msd_every : w.sample_every, (production + max_frames - 1) / max_frames));
-  MsdRecorder msd(n, msd_every * w.dt, max_frames);
-  std::vector<double> T, P;
-  const double V = s.box.volume();
-
-  const auto t0 = Clock::now();
-  vv.start(s, force);
-  const auto p0 = s.momentum();
-  for (std::int64_t step = 1; step <= w.steps; ++step) {
-    current = static_cast<std::uint64_t>(step);
-    const ForceSums f = vv.step(s, force);
-    r.steps_done = step;
-    const double kin = s.kinetic_twice();
-    const double temp = kin / (3.0 * n - 3.0);
-    const auto p = s.momentum();
-    r.momentum_drift = std::max(r.momentum_drift, std::hypot(p[0] - p0[0], p[1] - p0[1], p[2] - p0[2]) / n);
-    if (!std::isfinite(temp) || temp > w.max_temperature * w.kT) {
-      r.status = dpd::RunStatus::unstable(step, "temperature runaway or non-finite velocities");
-      break;
-    }
-    if (f.min_r2 < w.min_distance * w.min_distance) {
-      r.status = dpd::RunStatus::unstable(step, "beads closer than min_distance");
-      break;
-    }
-    if (step <= w.equilibrate) continue;
-    const std::int64_t k = step - w.equilibrate - 1;
-    T.push_back(temp);
-    P.push_back((kin + f.virial[0] + f.virial[1] + f.virial[2]) / (3.0 * V));
-    if (k % msd_every == 0) msd.sample(s);
-    if (t) {
-      if (cfg.chi2_every > 0 && k % cfg.chi2_every == 0) t->sample_step(s, current);
-      if (cfg.ttest_pairs > 0) t->sample_series(s, current);
-    }
-  }
-  r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  DecompObserver obs(cfg, s, t);
+  const SceneLimits limits{w.steps, w.equilibrate, w.kT, w.max_temperature, w.min_distance};
+  const SceneRun run = run_scene(
+      s, limits, [&] { return vv.start(s, force); },
+      [&](std::int64_t step) {
+        current = static_cast<std::uint64_t>(step);
+        return vv.step(s, force);
+      },
+      obs);
+  r.status = run.status;
+  r.steps_done = run.steps_done;
+  r.momentum_drift = run.momentum_drift;
+  r.seconds = run.total_s;
+  obs.finish(r);
+  const auto p0 = run.momentum_initial;
   const auto pe = s.momentum();
   r.momentum_final = std::hypot(pe[0] - p0[0], pe[1] - p0[1], pe[2] - p0[2]) / n;
   const double kin = s.kinetic_twice();
   r.com_kinetic_share = kin > 0 ? (pe[0] * pe[0] + pe[1] * pe[1] + pe[2] * pe[2]) / double(n) / kin : 0;
-  r.temperature = make_stat(T);
-  r.pressure = make_stat(P);
-  const Msd m = msd.finish();
-  r.diffusion = m.diffusion, r.diffusion_sem = m.diffusion_sem;
   return r;
 }
 

@@ -143,7 +143,8 @@ TEST(CliSimulate, TinyBilayerRunGivesItsJsonAlikeFromEitherCommand) {
       "head_separation_sem", "lipids", "lipids_out_max", "membrane_tension", "membrane_tension_conservative",
       "membrane_tension_conservative_sem", "membrane_tension_convention", "membrane_tension_sem",
       "membrane_tension_without_bend_virial", "membrane_tension_without_bond_virial", "momentum_drift_per_bead",
-      "momentum_final", "pairs", "particles", "pressure_diag", "pressure_mean", "pressure_sem",
+      "momentum_final", "nematic_order", "nematic_order_sem", "pairs", "particles", "pressure_diag", "pressure_mean",
+      "pressure_sem",
       "pressure_xx_mean", "pressure_xx_sem", "pressure_yy_mean", "pressure_yy_sem", "pressure_zz_mean",
       "pressure_zz_sem", "scene", "seeding", "status", "steps_done", "tail_order", "tail_order_sem",
       "tail_order_stat", "temperature", "temperature_mean", "temperature_sem", "tension", "thickness", "timings"};

@@ -68,6 +68,11 @@ TEST_F(BilayerCiRun, StaysIntact) {
   EXPECT_LT(r.momentum_drift, 1e-12);
   // Still a bilayer: tails ordered along the normal, two head layers several bead diameters apart.
   EXPECT_GT(r.tail_order.mean, 0.2);
+  // The lipid axes share a director: S well above an isotropic set's ≈ 1/√146, below perfect order, and sampled
+  // with the tail order.
+  EXPECT_GT(r.nematic_order.mean, 0.3);
+  EXPECT_LT(r.nematic_order.mean, 1.0);
+  EXPECT_EQ(r.nematic_order.n, r.tail_order.n);
   EXPECT_GT(r.thickness.mean, 3.0);
   EXPECT_LT(r.thickness.mean, 6.5);
 }

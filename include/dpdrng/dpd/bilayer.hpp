@@ -117,6 +117,7 @@ struct BilayerResult {
   Stat thickness;       // head-density peak to peak (whole profile); sem from `blocks` block profiles
   Stat head_separation; // per sample: mean z of the upper heads − mean z of the lower heads
   Stat tail_order;      // P2 = ⟨3cos²θ − 1⟩/2 of the T–T bonds against z
+  Stat nematic_order;   // largest eigenvalue of ⟨3/2 u uᵀ − 1/2 I⟩ over the lipids' backbone axes u
   std::vector<double> order_by_bond;    // the same per bond position along the tail (5 values)
   DensityProfile profile;
   int lipids_out_max = 0;

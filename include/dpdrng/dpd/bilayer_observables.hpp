@@ -24,6 +24,15 @@ struct TailOrder {
 };
 TailOrder tail_order(const System& s, std::size_t lipids);
 
+// Each lipid's axis: its backbone end to end, first head bead H1 to the last bead of tail a (not normalised;
+// 8 bond lengths when straight, well inside half a box side).
+std::vector<std::array<double, 3>> lipid_axes(const System& s, std::size_t lipids);
+
+// The nematic order parameter S: the largest eigenvalue of Q = ⟨3/2 u uᵀ − 1/2 I⟩ over the unit vectors u along
+// `axes` (zero-length axes are skipped; none gives 0). S = 1 when all axes are parallel, 0 for an isotropic
+// infinite set (a finite one gives S ≈ 1/√N); unlike tail_order's P2 it needs no reference direction.
+double nematic_order(const std::vector<std::array<double, 3>>& axes);
+
 // Position of the maximum of y over bins with centre z in (lo, hi), refined by a parabola through the
 // neighbouring bins.
 double peak_position(const std::vector<double>& z, const std::vector<double>& y, double lo, double hi);
