@@ -6,6 +6,7 @@
 #include <string>
 
 #include "dpdrng/cli/registry.hpp"
+#include "dpdrng/rng/defect.hpp"
 #include "dpdrng/rng/registry.hpp"
 
 namespace dpdrng::cli {

@@ -2,6 +2,7 @@
 
 #include "dpdrng/cli/registry.hpp"
 #include "dpdrng/common/error.hpp"
+#include "dpdrng/rng/defect.hpp"
 
 namespace dpdrng::cli {
 

@@ -110,7 +110,7 @@ std::string decomp_table_csv(const std::vector<DecompResult>& rows) {
     const auto count = [&](std::size_t n) { return h ? std::to_string(n) : std::string(); };
     out += detail::csv_line(
         {r.generator, r.seeding, r.distribution, r.domains, std::to_string(r.particles), std::to_string(d.steps_done),
-         d.status, std::to_string(s.boundary), std::to_string(s.shifted), field(s.mismatch_fraction()),
+         d.status.text(), std::to_string(s.boundary), std::to_string(s.shifted), field(s.mismatch_fraction()),
          std::to_string(b.evaluations), std::to_string(b.boundary), std::to_string(b.shifted),
          std::to_string(b.separation_mismatch), std::to_string(b.range_mismatch), std::to_string(b.zeta_mismatch),
          field(b.mismatch_fraction()), field(b.zeta_diff_mean()), field(b.zeta_diff_rms()), field(b.zeta_diff_max),

@@ -103,8 +103,28 @@ Stat stat_of(const json& j) {
   return s;
 }
 
+// A run's status as its three parts, so that reading it back gives the same RunStatus.
+json status_record(const dpd::RunStatus& s) {
+  const char* state = s.state == dpd::RunState::ok ? "ok" : s.state == dpd::RunState::unstable ? "unstable" : "disrupted";
+  return {{"state", state}, {"step", s.step}, {"detail", s.detail}};
+}
+
+dpd::RunStatus status_of(const json& j) {
+  const std::string state = j.at("state").get<std::string>();
+  dpd::RunStatus s;
+  if (state == "unstable")
+    s.state = dpd::RunState::unstable;
+  else if (state == "disrupted")
+    s.state = dpd::RunState::disrupted;
+  else if (state != "ok")
+    throw std::runtime_error("unknown run state \"" + state + "\"");
+  s.step = j.at("step").get<std::int64_t>();
+  s.detail = j.at("detail").get<std::string>();
+  return s;
+}
+
 json run_record(const DecompRun& r) {
-  return {{"status", r.status},
+  return {{"status", status_record(r.status)},
           {"steps_done", r.steps_done},
           {"temperature", stat_record(r.temperature)},
           {"pressure", stat_record(r.pressure)},
@@ -119,7 +139,7 @@ json run_record(const DecompRun& r) {
 
 DecompRun run_of(const json& j) {
   DecompRun r;
-  r.status = j.at("status").get<std::string>();
+  r.status = status_of(j.at("status"));
   r.steps_done = j.at("steps_done").get<std::int64_t>();
   r.temperature = stat_of(j.at("temperature"));
   r.pressure = stat_of(j.at("pressure"));

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "dpdrng/rng/stream.hpp"
+#include "dpdrng/rng/tea.hpp"
 #include "run_cli.hpp"
 
 using namespace dpdrng::rng;

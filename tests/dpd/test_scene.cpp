@@ -13,7 +13,7 @@ struct Counting : SceneObserver {
   int every = 0, checks = 0, samples = 0, production = 0;
   std::int64_t stop_at = -1;  // the scene's own guard fires at this step
   void every_step(const StepSums&, const System&) override { ++every; }
-  std::string check(const StepSums& x) override {
+  RunStatus check(const StepSums& x) override {
     ++checks;
     return x.step == stop_at ? RunStatus::unstable(x.step, "scene says stop") : RunStatus{};
   }
