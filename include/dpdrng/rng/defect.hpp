@@ -57,6 +57,7 @@ struct Defect {
 
   Base base;
   DefectParams p;
+  static DefectParams params(std::string_view name) { return parse_defect(name); }
   TeaKey key = kPaperTeaKey;  // the base's key
   int rounds = 1;
 

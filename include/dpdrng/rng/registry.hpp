@@ -25,8 +25,6 @@ struct Threefry2x64;
 struct SplitMix64;
 struct Saru;
 struct Defect;
-struct DefectParams;
-DefectParams parse_defect(std::string_view name);
 
 // The generator families. mt19937 is the reference stream, not a keyed hash.
 enum class Family { tea32, tea64, philox4x32, threefry2x64, splitmix64, saru, defect, mt19937 };
@@ -127,7 +125,7 @@ template <class G, class F>
 decltype(auto) keyed(const GeneratorSpec& s, F&& f) {
   G g;
   g.key = s.key;
-  if constexpr (requires { g.p; }) g.p = parse_defect(s.name);
+  if constexpr (requires { g.p; }) g.p = G::params(s.name);
   return f(g);
 }
 }  // namespace detail
