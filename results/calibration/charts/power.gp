@@ -8,7 +8,7 @@ set key outside right top noenhanced
 set datafile missing "nan"
 set logscale x
 set yrange [0:1.05]
-set xrange [0.008:0.1]
+set xrange [0.008:0.0375]
 plot "data/power_0.dat" using 1:2:3:4 with yerrorlines lw 2 title "3 replicas", \
      "data/power_1.dat" using 1:2:3:4 with yerrorlines lw 2 title "4 replicas", \
      "data/power_2.dat" using 1:2:3:4 with yerrorlines lw 2 title "8 replicas", \
