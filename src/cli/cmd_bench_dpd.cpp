@@ -24,6 +24,7 @@
 #include "dpdrng/version.hpp"
 
 namespace dpdrng::cli {
+namespace cmd_bench_dpd {
 namespace {
 
 struct BenchDpdArgs {
@@ -460,4 +461,5 @@ const bool registered = register_command(62, [](CLI::App& root) {
 });
 
 }  // namespace
+}  // namespace cmd_bench_dpd
 }  // namespace dpdrng::cli

@@ -17,6 +17,7 @@
 #include "dpdrng/stats/nist/battery.hpp"
 
 namespace dpdrng::cli {
+namespace cmd_bench_nist {
 namespace {
 
 namespace nist = stats::nist;
@@ -107,4 +108,5 @@ const bool registered = register_command(45, [](CLI::App& root) {
 });
 
 }  // namespace
+}  // namespace cmd_bench_nist
 }  // namespace dpdrng::cli

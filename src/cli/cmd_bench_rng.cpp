@@ -30,6 +30,7 @@
 #include "dpdrng/version.hpp"
 
 namespace dpdrng::cli {
+namespace cmd_bench_rng {
 namespace {
 
 using rng::GeneratorSpec;
@@ -414,4 +415,5 @@ const bool registered = register_command(40, [](CLI::App& root) {
 });
 
 }  // namespace
+}  // namespace cmd_bench_rng
 }  // namespace dpdrng::cli

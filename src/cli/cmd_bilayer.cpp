@@ -16,6 +16,7 @@
 #include "dpdrng/common/output.hpp"
 
 namespace dpdrng::cli {
+namespace cmd_bilayer {
 namespace {
 
 void write_series(const std::filesystem::path& dir, const dpd::BilayerResult& r) {
@@ -92,6 +93,7 @@ const bool registered = register_command(41, [](CLI::App& root) {
 });
 
 }  // namespace
+}  // namespace cmd_bilayer
 
 void run_bilayer_scene(const dpd::BilayerConfig& in, bool json, bool quiet, const std::string& series_dir) {
   dpd::BilayerConfig cfg = in;
@@ -105,11 +107,11 @@ void run_bilayer_scene(const dpd::BilayerConfig& in, bool json, bool quiet, cons
       if (step == steps) std::cerr << "\n";
     };
   const dpd::BilayerResult r = dpd::run_bilayer(cfg, hooks);
-  if (!series_dir.empty()) write_series(series_dir, r);
+  if (!series_dir.empty()) cmd_bilayer::write_series(series_dir, r);
   if (json)
     std::cout << dpd::to_json(r, false).dump(2) << "\n";
   else
-    print_human(r);
+    cmd_bilayer::print_human(r);
 }
 
 void simulate_bilayer(const CLI::App& sub, const dpd::WaterConfig& w, const RunOptions& o) {

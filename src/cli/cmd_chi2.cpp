@@ -7,6 +7,7 @@
 #include "stats_cli.hpp"
 
 namespace dpdrng::cli {
+namespace cmd_chi2 {
 namespace {
 
 struct Chi2Args {
@@ -113,4 +114,5 @@ const bool registered = register_command(30, [](CLI::App& root) {
 });
 
 }  // namespace
+}  // namespace cmd_chi2
 }  // namespace dpdrng::cli

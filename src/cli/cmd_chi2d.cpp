@@ -7,6 +7,7 @@
 #include "stats_cli.hpp"
 
 namespace dpdrng::cli {
+namespace cmd_chi2d {
 namespace {
 
 struct Chi2dArgs {
@@ -83,4 +84,5 @@ const bool registered = register_command(30, [](CLI::App& root) {
 });
 
 }  // namespace
+}  // namespace cmd_chi2d
 }  // namespace dpdrng::cli

@@ -9,6 +9,7 @@
 #include "stats_cli.hpp"
 
 namespace dpdrng::cli {
+namespace cmd_corr {
 namespace {
 
 struct CorrArgs {
@@ -102,4 +103,5 @@ const bool registered = register_command(32, [](CLI::App& root) {
 });
 
 }  // namespace
+}  // namespace cmd_corr
 }  // namespace dpdrng::cli

@@ -12,6 +12,7 @@
 #include "dpdrng/study/decomposition_sweep.hpp"
 
 namespace dpdrng::cli {
+namespace cmd_decompose {
 namespace {
 
 struct DecomposeArgs {
@@ -168,4 +169,5 @@ const bool registered = register_command(45, [](CLI::App& root) {
 });
 
 }  // namespace
+}  // namespace cmd_decompose
 }  // namespace dpdrng::cli

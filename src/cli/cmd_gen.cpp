@@ -16,6 +16,7 @@
 #include "dpdrng/rng/stream.hpp"
 
 namespace dpdrng::cli {
+namespace cmd_gen {
 namespace {
 
 struct GenArgs {
@@ -94,4 +95,5 @@ const bool registered = register_command(10, [](CLI::App& root) {
 });
 
 }  // namespace
+}  // namespace cmd_gen
 }  // namespace dpdrng::cli

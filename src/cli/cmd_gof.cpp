@@ -6,6 +6,7 @@
 #include "stats_cli.hpp"
 
 namespace dpdrng::cli {
+namespace cmd_gof {
 namespace {
 
 struct GofArgs {
@@ -59,4 +60,5 @@ const bool registered = register_command(34, [](CLI::App& root) {
 });
 
 }  // namespace
+}  // namespace cmd_gof
 }  // namespace dpdrng::cli

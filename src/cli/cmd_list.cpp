@@ -10,6 +10,7 @@
 #include "dpdrng/rng/registry.hpp"
 
 namespace dpdrng::cli {
+namespace cmd_list {
 namespace {
 
 std::string rounds_text(const rng::GeneratorInfo& g) {
@@ -55,4 +56,5 @@ const bool registered = register_command(5, [](CLI::App& root) {
 });
 
 }  // namespace
+}  // namespace cmd_list
 }  // namespace dpdrng::cli

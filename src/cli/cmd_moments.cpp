@@ -6,6 +6,7 @@
 #include "stats_cli.hpp"
 
 namespace dpdrng::cli {
+namespace cmd_moments {
 namespace {
 
 struct MomentsArgs {
@@ -77,4 +78,5 @@ const bool registered = register_command(33, [](CLI::App& root) {
 });
 
 }  // namespace
+}  // namespace cmd_moments
 }  // namespace dpdrng::cli

@@ -120,6 +120,7 @@ void print_nist(const NistInput& in, const std::vector<std::vector<nist::TestRes
   }
 }
 
+namespace cmd_nist {
 namespace {
 
 struct NistArgs {
@@ -187,4 +188,5 @@ const bool registered = register_command(35, [](CLI::App& root) {
 });
 
 }  // namespace
+}  // namespace cmd_nist
 }  // namespace dpdrng::cli

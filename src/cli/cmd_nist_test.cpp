@@ -12,6 +12,7 @@
 #include "dpdrng/stats/nist/tests.hpp"
 
 namespace dpdrng::cli {
+namespace cmd_nist_test {
 namespace {
 
 namespace nist = stats::nist;
@@ -135,4 +136,5 @@ const bool registered = register_command(36, [](CLI::App& root) {
 });
 
 }  // namespace
+}  // namespace cmd_nist_test
 }  // namespace dpdrng::cli

@@ -18,6 +18,7 @@
 #include "csv_out.hpp"
 
 namespace dpdrng::cli {
+namespace cmd_simulate {
 namespace {
 
 struct SimulateArgs {
@@ -172,4 +173,5 @@ const bool registered = register_command(40, [](CLI::App& root) {
 });
 
 }  // namespace
+}  // namespace cmd_simulate
 }  // namespace dpdrng::cli

@@ -17,6 +17,7 @@
 #include "dpdrng/study/store.hpp"
 
 namespace dpdrng::cli {
+namespace cmd_study {
 namespace {
 namespace fs = std::filesystem;
 using namespace dpdrng::study;
@@ -71,7 +72,7 @@ void merge(const std::vector<std::string>& dirs, const std::string& out_dir) {
 }
 
 struct CalibrateArgs {
-  std::string config, out, replicas, variance = "0.0025,0.005,0.01,0.02", lag1, mean;
+  std::string config, out, replicas, variance = "0.0025,0.005,0.01,0.02", lag1, mean, shard = "1/1";
   int null_studies = 100, power_studies = 10, threads = 1;
   bool json = false, no_charts = false;
 };
@@ -107,12 +108,19 @@ void calibrate_cmd(const CalibrateArgs& a) {
   plan.variance = real_list(a.variance, "--variance");
   plan.lag1 = real_list(a.lag1, "--lag1");
   plan.mean = real_list(a.mean, "--mean");
+  plan.shard = parse_shard(a.shard);
   const StudyConfig pool = calibration_pool(config, plan);  // every input checked before anything is written
   validate_scene(pool);
   const fs::path out(a.out);
   prepare_output_directory(out, "--out");
   Store store(out / "pool");
   Calibration c = calibrate(config, plan, store, measure_cell, a.threads, &std::cerr);
+  if (c.missing > 0) {
+    std::cerr << "[calibrate] shard " << plan.shard.index << "/" << plan.shard.count << " done; " << c.missing
+              << " cells of other shards not stored yet: run the other shards (or calibrate without --shard) "
+                 "into the same --out to finish\n";
+    return;
+  }
   c.machine = machine_name() + ", " + std::to_string(std::thread::hardware_concurrency()) + " cores";
   write_calibration(c, out, !a.no_charts, &std::cerr);
   if (a.json)
@@ -191,6 +199,10 @@ const bool registered = register_command(60, [](CLI::App& root) {
   k->add_option("--lag1", ca->lag1, "lag-1 correlation defects ρ (run in pair-step seeding)");
   k->add_option("--mean", ca->mean, "mean-shift defects μ");
   add_integer(*k, "--threads,-t", ca->threads, "threads inside each cell (cells run one at a time)", {1, 1024});
+  k->add_option("--shard", ca->shard,
+                "compute only shard k of N of the pool's cells (round-robin), e.g. 1/2: shards share --out, and "
+                "the one that finds every cell stored writes the summary")
+      ->capture_default_str();
   k->add_flag("--json", ca->json, "print calibration.json on standard output");
   k->add_flag("--no-charts", ca->no_charts, "skip gnuplot");
   k->callback([ca] { calibrate_cmd(*ca); });
@@ -208,4 +220,5 @@ const bool registered = register_command(60, [](CLI::App& root) {
 });
 
 }  // namespace
+}  // namespace cmd_study
 }  // namespace dpdrng::cli

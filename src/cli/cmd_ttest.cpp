@@ -6,6 +6,7 @@
 #include "stats_cli.hpp"
 
 namespace dpdrng::cli {
+namespace cmd_ttest {
 namespace {
 
 struct TtestArgs {
@@ -88,4 +89,5 @@ const bool registered = register_command(31, [](CLI::App& root) {
 });
 
 }  // namespace
+}  // namespace cmd_ttest
 }  // namespace dpdrng::cli

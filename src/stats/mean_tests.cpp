@@ -53,6 +53,11 @@ double TTest::ci_half_width(double confidence) const {
   return t_half_width_factor(dof, confidence) * se;
 }
 
+double detectable_difference(double se, double dof, double alpha, double power) {
+  if (!(dof > 0) || !std::isfinite(se) || !(alpha > 0 && alpha < 1) || !(power > 0 && power < 1)) return NAN;
+  return (gsl_cdf_tdist_Qinv(0.5 * alpha, dof) + gsl_cdf_tdist_Pinv(power, dof)) * se;
+}
+
 TTest pooled_t(std::span<const double> x, std::span<const double> y, std::span<const VarianceEstimate> extra) {
   TTest r;
   r.n = x.size();

@@ -1,10 +1,12 @@
 #include "dpdrng/study/analysis.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "compare.hpp"
 #include "dpdrng/rng/registry.hpp"
+#include "dpdrng/stats/mean_tests.hpp"
 #include "dpdrng/stats/multiple.hpp"
 #include "dpdrng/stats/nist/battery.hpp"
 #include "dpdrng/stats/summary.hpp"
@@ -320,6 +322,7 @@ Analysis analyse(const StudyConfig& config, const std::vector<CellResult>& cells
   for (std::size_t k = 0; k < a.variants.size(); ++k) {
     if (!a.variants[k].no_reference.empty() || a.variants[k].cells.empty()) continue;
     tests[k] = tests_of(a.variants[k]);
+    a.variants[k].tests = tests[k].size();
     if (tests[k].empty()) continue;
     a.family_size += tests[k].size();
     if (a.error_control == ErrorControl::variant) {
@@ -336,6 +339,46 @@ Analysis analyse(const StudyConfig& config, const std::vector<CellResult>& cells
   for (std::size_t k = 0; k < a.variants.size(); ++k) set_verdict(a.variants[k], tests[k]);
   decide_zeta(a);
   return a;
+}
+
+TemperatureLimit temperature_limit(const Analysis& a, double power) {
+  TemperatureLimit out;
+  out.power = power;
+  std::vector<double> shifts;
+  std::size_t largest_family = 0;
+  for (const auto& v : a.variants) {
+    if (v.key.reference || v.tests == 0) continue;
+    const std::size_t m = a.error_control == ErrorControl::study ? a.family_size : v.tests;
+    for (const auto& c : v.observables) {
+      if (c.observable != "temperature_mean" && c.observable != "temperature") continue;
+      // Paired (bilayer) comparisons keep absolute errors: relative to the reference's temperature here.
+      const double se = c.paired ? c.sigma / std::abs(c.ref) : c.sigma;
+      const double d = stats::detectable_difference(se, c.dof, a.alpha / double(m), power);
+      if (!std::isfinite(d)) continue;
+      shifts.push_back(d);
+      largest_family = std::max(largest_family, m);
+    }
+  }
+  out.variants = shifts.size();
+  if (shifts.empty()) return out;
+  out.median = stats::median(shifts);
+  out.low = *std::min_element(shifts.begin(), shifts.end());
+  out.high = *std::max_element(shifts.begin(), shifts.end());
+  out.threshold = a.alpha / double(largest_family);
+  return out;
+}
+
+std::string temperature_limit_sentence(const Analysis& a) {
+  const TemperatureLimit t = temperature_limit(a);
+  if (t.variants == 0) return "";
+  char buf[600];
+  std::snprintf(buf, sizeof buf,
+                "Detection limit from this study's own spread: a temperature error of %.2g %% (median over %zu "
+                "variants; %.2g–%.2g %%) is detected %.0f %% of the time by the temperature t-test at Holm's "
+                "strictest threshold α/m = %.2g (the t approximation of its power, with each comparison's "
+                "standard error and degrees of freedom; a model, not a calibration).",
+                100 * t.median, t.variants, 100 * t.low, 100 * t.high, 100 * t.power, t.threshold);
+  return buf;
 }
 
 }  // namespace dpdrng::study

@@ -231,7 +231,7 @@ Calibration calibrate(const StudyConfig& config, const CalibrationPlan& plan, St
   for (const auto& c : enumerate_cells(pool))
     if (c.reference || is_good(c.generator) || c.replica < q) all.push_back(c);
   Calibration out;
-  for (const auto& c : all) {
+  for (const auto& c : select_shard(all, plan.shard)) {
     if (store.has(c)) {
       ++out.resumed;
     } else {
@@ -242,8 +242,9 @@ Calibration calibrate(const StudyConfig& config, const CalibrationPlan& plan, St
   out.cells = all.size();
   if (progress)
     *progress << "[calibrate] " << config.name << ": " << all.size() << " cells (" << pool.replicas
-              << " pool replicas, defects on the first " << q << "), " << out.resumed << " stored, "
-              << todo.size() << " to compute, into " << store.dir().string() << "\n";
+              << " pool replicas, defects on the first " << q << "), shard " << plan.shard.index << "/"
+              << plan.shard.count << ": " << out.resumed << " stored, " << todo.size() << " to compute, into "
+              << store.dir().string() << "\n";
   double busy = 0;
   for (std::size_t k = 0; k < todo.size(); ++k) {
     const auto c0 = clock::now();
@@ -268,6 +269,8 @@ Calibration calibrate(const StudyConfig& config, const CalibrationPlan& plan, St
     }
   }
 
+  for (const auto& c : all) out.missing += !store.has(c);
+  if (out.missing > 0) return out;
   std::vector<UnreadableCell> unreadable;
   const std::vector<CellResult> cells = store.load_all(&unreadable);
   if (!unreadable.empty())

@@ -283,7 +283,9 @@ std::string where(const fs::path& file) {
 std::string detection_limit_sentence(const StudyConfig& config, const fs::path& dir) {
   const std::string none = "Detection limit: not calibrated for this config (no `dpdrng study calibrate` result "
                            "with its scene, run length, tests and replica count).";
-  if (config.scene.is_bilayer()) return none;
+  if (config.scene.is_bilayer())
+    return "Detection limit: not calibrated (`dpdrng study calibrate` runs the water scene only; a membrane "
+           "cell costs minutes, a calibration thousands of cells).";
   const nlohmann::json key = calibration_key(config);
   std::string other_length;
   for (const auto& file : calibration_files(dir)) {

@@ -127,7 +127,9 @@ std::string report_header(const StudyConfig& config, const Analysis& a, const st
   md << "- replicas per variant: " << config.replicas << "; reference: " << config.reference << "; α = " << a.alpha
      << "\n- "
      << (a.family_size ? a.error_control_sentence() : "Error control: none needed (no tests, no verdicts)")
-     << "\n- " << detection_limit << "\n- config hash `" << config.hash
+     << "\n- " << detection_limit << "\n";
+  if (const std::string own = temperature_limit_sentence(a); !own.empty()) md << "- " << own << "\n";
+  md << "- config hash `" << config.hash
      << "` (the config is stored in study.h5 and study.toml); generated "
      << when << "\n\n";
   return md.str();

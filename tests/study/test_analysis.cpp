@@ -2,9 +2,12 @@
 // statistics under them agree with hand computations.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
+#include "dpdrng/stats/mean_tests.hpp"
 #include "dpdrng/stats/multiple.hpp"
+#include "dpdrng/stats/summary.hpp"
 #include "dpdrng/study/analysis.hpp"
 #include "dpdrng/study/report.hpp"
 #include "fake_measure.hpp"
@@ -299,4 +302,29 @@ TEST(StudyReport, NistLayoutFollowsTheReference) {
   EXPECT_NE(line_with("Runs").find(" 90/100"), std::string::npos) << text;
   EXPECT_NE(line_with("Runs").find('*'), std::string::npos) << text;
   EXPECT_NE(text.find("1 of 2 P-value series fail the proportion bound"), std::string::npos) << text;
+}
+
+// The own-spread detection limit is stats::detectable_difference of each temperature comparison at α/m, and a
+// temperature error of three times that limit, planted in one variant, is declared.
+TEST(StudyAnalysis, TemperatureLimitFromTheStudysOwnSpread) {
+  const StudyConfig cfg = parse_config(kConfig, "c.toml");
+  const Analysis a = analyse(cfg, fake_cells(cfg, 0.0));
+  const TemperatureLimit t = temperature_limit(a);
+  std::vector<double> by_hand;
+  for (const auto& v : a.variants) {
+    if (v.key.reference || v.tests == 0) continue;
+    const Comparison& c = comparison(v, "temperature_mean");
+    by_hand.push_back(dpdrng::stats::detectable_difference(c.sigma, c.dof, a.alpha / double(a.family_size), 0.9));
+  }
+  ASSERT_FALSE(by_hand.empty());
+  EXPECT_EQ(t.variants, by_hand.size());
+  EXPECT_EQ(t.threshold, a.alpha / double(a.family_size));
+  EXPECT_EQ(t.low, *std::min_element(by_hand.begin(), by_hand.end()));
+  EXPECT_EQ(t.high, *std::max_element(by_hand.begin(), by_hand.end()));
+  EXPECT_EQ(t.median, dpdrng::stats::median(by_hand));
+  EXPECT_GT(t.low, 0.0);
+  EXPECT_NE(temperature_limit_sentence(a).find("own spread"), std::string::npos);
+
+  const Analysis shifted = analyse(cfg, fake_cells(cfg, 3 * t.high));
+  EXPECT_TRUE(comparison(find(shifted, "tea32", 1), "temperature_mean").decision.differs);
 }

@@ -89,6 +89,38 @@ TEST(Calibrate, PoolCountsAndRates) {
   }
 }
 
+// Two shards into one pool compute disjoint halves; the first to finish analyses nothing, the second finds every
+// cell and gives the calibration of an unsharded run.
+TEST(Calibrate, ShardsShareOnePool) {
+  TempDir tmp;
+  const StudyConfig cfg = parse_config(fake::small_config_toml("calib-shards", 3), "c.toml");
+  CalibrationPlan plan = small_plan();
+  plan.null_studies = 4;
+  DefectAwareFake one, two, whole;
+  const auto with = [](DefectAwareFake& f) {
+    return MeasureFn([&f](const Cell& c, const StudyConfig& s, int t) { return f(c, s, t); });
+  };
+  Store store(tmp.path / "sharded");
+  plan.shard = {1, 2};
+  const Calibration a = calibrate(cfg, plan, store, with(one), 1, nullptr);
+  EXPECT_GT(a.missing, 0u);
+  EXPECT_TRUE(a.nulls.empty());
+  EXPECT_EQ(std::size_t(one.calls) + a.missing, a.cells);
+  plan.shard = {2, 2};
+  const Calibration b = calibrate(cfg, plan, store, with(two), 1, nullptr);
+  EXPECT_EQ(b.missing, 0u);
+  EXPECT_EQ(std::size_t(one.calls + two.calls), b.cells);
+  EXPECT_LE(std::abs(one.calls - two.calls), 1);
+
+  Store unsharded(tmp.path / "whole");
+  plan.shard = {1, 1};
+  const Calibration c = calibrate(cfg, plan, unsharded, with(whole), 1, nullptr);
+  nlohmann::json jb = to_json(b), jc = to_json(c);
+  for (const char* k : {"computed", "resumed", "wall_seconds", "wall_seconds_total", "cell_seconds"})
+    jb.erase(k), jc.erase(k);
+  EXPECT_EQ(jb, jc);
+}
+
 TEST(Calibrate, ResumesWithoutRecomputing) {
   TempDir tmp;
   const StudyConfig cfg = parse_config(fake::small_config_toml("calib-resume", 3), "c.toml");

@@ -42,4 +42,10 @@ TTest pooled_t(std::span<const double> x, std::span<const double> y, std::span<c
 // one difference pooled from their spread and the extra estimates.
 TTest paired_t(std::span<const double> d, std::span<const VarianceEstimate> extra = {});
 
+// The smallest true difference that a two-sided t-test at level `alpha`, with standard error `se` on `dof`
+// degrees of freedom, rejects with probability `power`: (t_{dof,1−α/2} + t_{dof,power}) · se. The usual
+// approximation of the noncentral t's power (Cohen, Statistical Power Analysis, 1988, ch. 2), exact as dof → ∞;
+// it ignores the chance of rejecting on the wrong side, which is below α/2. NaN for dof ≤ 0 or se not finite.
+double detectable_difference(double se, double dof, double alpha, double power);
+
 }  // namespace dpdrng::stats

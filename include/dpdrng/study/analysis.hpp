@@ -120,6 +120,7 @@ struct VariantReport {
   std::string no_reference;
   std::string verdict;       // "indistinguishable from MT at this sample size" / "differs (p = …: …)" / ...
   double min_p = NAN;        // smallest adjusted P-value behind the verdict (NaN: nothing tested)
+  std::size_t tests = 0;     // tests behind the verdict (this variant's share of the family)
   std::string min_p_what;
 };
 
@@ -135,6 +136,19 @@ struct Analysis {
 };
 
 Analysis analyse(const StudyConfig& config, const std::vector<CellResult>& cells);
+
+// How small a temperature error the study's own t-tests see: for each variant with a verdict, the relative
+// shift of k_BT that its temperature test (standard error and degrees of freedom as compared) rejects `power`
+// of the time at Holm's strictest threshold α/m, m the size of the variant's family (stats::
+// detectable_difference). A defect that shifts nothing else must pass that threshold to be declared.
+struct TemperatureLimit {
+  std::size_t variants = 0;
+  double median = NAN, low = NAN, high = NAN;  // relative shift: median and range over the variants
+  double threshold = NAN;                      // α/m (the largest m under variant control)
+  double power = NAN;
+};
+TemperatureLimit temperature_limit(const Analysis& a, double power = 0.9);
+std::string temperature_limit_sentence(const Analysis& a);  // "" when no variant has a temperature test
 
 // The bilayer scene's scalars: cells store <name>_mean, _std, _sem and _sem_dof (measure.hpp).
 struct BilayerObservable {

@@ -31,6 +31,9 @@ struct CalibrationPlan {
   std::vector<int> replicas;  // replica counts to calibrate; empty = the config's
   std::vector<double> variance{0.0025, 0.005, 0.01, 0.02};  // ε of defect:variance=ε
   std::vector<double> lag1, mean;                            // ρ and μ (lag-1 runs in pair-step seeding)
+  // Cells this process computes (round-robin over the pool's cells, as `study run --shard`): shards share the
+  // pool directory, and the run that finds every cell stored analyses.
+  Shard shard{};
 };
 
 // The config's scene with the pool's generators and replicas, and without NIST cells (the battery reads words,
@@ -80,6 +83,7 @@ struct Calibration {
   std::vector<PowerRow> power;
   std::vector<Threshold> thresholds;
   std::size_t cells = 0, computed = 0, resumed = 0, failed = 0;
+  std::size_t missing = 0;  // pool cells not stored yet (other shards'): nothing is analysed while any is
   double seconds = 0;     // wall time of this invocation
   double wall_total = 0;  // wall time of every invocation on this pool, summed
   double cell_seconds = 0;  // summed compute time of every cell in the pool (this and earlier invocations)
@@ -90,8 +94,9 @@ struct Calibration {
 // seeding, α, error control and the test sizes behind the verdicts (not the replica count, a row of its own).
 nlohmann::json calibration_key(const StudyConfig& config);
 
-// Computes the pool's missing cells one at a time (each with `threads` threads), saving each to `store`, then
-// analyses. Progress and an ETA on `progress` when given.
+// Computes the pool's missing cells of the plan's shard one at a time (each with `threads` threads), saving each
+// to `store`, then analyses, unless cells of other shards are still missing (`missing` > 0, nothing else set).
+// Progress and an ETA on `progress` when given.
 Calibration calibrate(const StudyConfig& config, const CalibrationPlan& plan, Store& store, const MeasureFn& measure,
                       int threads, std::ostream* progress);
 
