@@ -162,7 +162,6 @@ class PairLoop final : public PairForces {
     double* dzs = sc.dz.data();
     double* r2s = sc.r2.data();
     const double rc2 = k_.rc2();
-    std::size_t k = 0;
     if constexpr (!Zero) {
       RowBatch b{i, m, dxs, dys, dzs, r2s, sc.j.data(), rc2, c.step, base, {nullptr, nullptr}, sc.zeta.data()};
       if (c.tap)
@@ -170,14 +169,7 @@ class PairLoop final : public PairForces {
       forces<Zero>(c, i, noise_->row(b, thread), sc, rows_[i]);
       return;
     }
-    // Compact the pairs inside r_c in place (t' ≤ t), keeping their order.
-    for (std::size_t t = 0; t < m; ++t) {
-      if (!(r2s[t] < rc2)) continue;
-      sc.j[k] = std::uint32_t(i + 1 + t);
-      dxs[k] = dxs[t], dys[k] = dys[t], dzs[k] = dzs[t], r2s[k] = r2s[t];
-      ++k;
-    }
-    forces<Zero>(c, i, k, sc, rows_[i]);
+    forces<Zero>(c, i, compact_in_range(i + 1, m, rc2, dxs, dys, dzs, r2s, sc.j.data()), sc, rows_[i]);
   }
 
   void resize_sorted(std::size_t n) {

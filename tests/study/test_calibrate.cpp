@@ -77,8 +77,12 @@ TEST(Calibrate, PoolCountsAndRates) {
   ASSERT_EQ(c.power.size(), 6u);
   for (const auto& p : c.power) {
     EXPECT_EQ(p.detected.trials, std::size_t(12 / p.replicas)) << p.size;
-    if (p.size == 0.05) EXPECT_EQ(p.detected.events, p.detected.trials);
-    if (p.size == 0.0001) EXPECT_LT(p.detected.events, p.detected.trials);
+    if (p.size == 0.05) {
+      EXPECT_EQ(p.detected.events, p.detected.trials);
+    }
+    if (p.size == 0.0001) {
+      EXPECT_LT(p.detected.events, p.detected.trials);
+    }
     // The measured T error is ε plus the difference of two replica noises (spread ≈ 0.0009 / 1.03 each).
     EXPECT_NEAR(p.temperature_error, p.size, 0.0015) << p.size;
   }

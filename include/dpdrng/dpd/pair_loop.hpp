@@ -13,6 +13,8 @@
 //          sorting.
 // Both modes turn a row's or a cell bead's blocks into ζ in one batch inside the kernel (the feed is switched
 // on once per batch, not per pair), and compute the second blocks only under the blocks feed.
+#include <algorithm>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -43,7 +45,28 @@ inline void geometry(const double* __restrict x, const double* __restrict y, con
   }
 }
 
-// All mode, row i: its m partners i + 1 … i + m, every one hashed (slots slot, slot + 1, …).
+// Keeps the pairs with r² < rc2 (NaN fails), in order, moving them to the front in place and writing their
+// partners first_j + t to j; returns how many. About 1 pair in 20 lies inside r_c in the all-pairs mode, at
+// random: a branch per pair would mispredict, and copying every pair unconditionally costs more than it saves.
+// So each run of 64 pairs is first reduced to a bit mask (no branch), then only its set bits are visited.
+inline std::size_t compact_in_range(std::uint32_t first_j, std::size_t m, double rc2, double* dx, double* dy,
+                                    double* dz, double* r2, std::uint32_t* j) {
+  std::size_t k = 0;
+  for (std::size_t base = 0; base < m; base += 64) {
+    const std::size_t n = std::min<std::size_t>(64, m - base);
+    std::uint64_t inside = 0;
+    for (std::size_t t = 0; t < n; ++t) inside |= std::uint64_t(r2[base + t] < rc2) << t;
+    for (; inside != 0; inside &= inside - 1, ++k) {
+      const std::size_t t = base + std::size_t(std::countr_zero(inside));
+      j[k] = first_j + std::uint32_t(t);
+      dx[k] = dx[t], dy[k] = dy[t], dz[k] = dz[t], r2[k] = r2[t];
+    }
+  }
+  return k;
+}
+
+// All mode, row i: its m partners i + 1 … i + m (slots slot, slot + 1, …). A hash draws only the pairs inside
+// r_c; a stream (which owns a number per slot) and a tapped step (which records every pair's words) draw all.
 struct RowBatch {
   std::uint32_t i;
   std::size_t m;
