@@ -101,7 +101,8 @@ std::string summary_markdown(const Calibration& c) {
      << " resumed, " << c.failed << " failed); wall time " << detail::fmt("%.0f", c.wall_total)
      << " s over every invocation on this pool (the last " << detail::fmt("%.0f", c.seconds)
      << " s); compute time of all cells " << detail::fmt("%.0f", c.cell_seconds)
-     << " s, one cell at a time on one core (`nice`, beside other jobs); "
+     << " s (the cells' own wall times, each process computing one cell at a time; on a shared machine they carry "
+        "its load); "
      << "machine: " << c.machine << ".\n";
   return md.str();
 }
