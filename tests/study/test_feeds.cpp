@@ -51,9 +51,13 @@ TEST(StudyFeeds, FeedsMultiplyGaussianCellsOnly) {
   std::set<std::string> ids;
   for (const auto& cell : cells) {
     ids.insert(cell.id());
-    if (cell.distribution == rng::Distribution::uniform) EXPECT_EQ(cell.feed, rng::Feed::halves);
+    if (cell.distribution == rng::Distribution::uniform) {
+      EXPECT_EQ(cell.feed, rng::Feed::halves);
+    }
     // NIST reads the first block: only the first feed's cells run it.
-    if (cell.feed != rng::Feed::halves) EXPECT_FALSE(cell.nist) << cell.id();
+    if (cell.feed != rng::Feed::halves) {
+      EXPECT_FALSE(cell.nist) << cell.id();
+    }
   }
   EXPECT_EQ(ids.size(), cells.size());
   EXPECT_TRUE(ids.count("tea32-r01-gauss-blocks-distance-dt0.04-rep01"));

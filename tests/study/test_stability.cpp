@@ -173,7 +173,9 @@ TEST(StabilityCli, CiStudyReportsEveryCell) {
     EXPECT_NE(csv.find(p.method() + "," + p.integrator), std::string::npos) << p.method();
     char dt[32];
     std::snprintf(dt, sizeof dt, "%g", p.dt);
-    if (p.all_blew_up()) EXPECT_NE(md.find("| " + p.method() + " | " + dt + " | 0/"), std::string::npos) << p.method();
+    if (p.all_blew_up()) {
+      EXPECT_NE(md.find("| " + p.method() + " | " + dt + " | 0/"), std::string::npos) << p.method();
+    }
   }
 }
 
