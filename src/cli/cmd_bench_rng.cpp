@@ -22,18 +22,19 @@
 #include "dpdrng/cli/registry.hpp"
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/common/machine.hpp"
-#include "dpdrng/rng/dispatch.hpp"
 #include "dpdrng/rng/inverse_normal.hpp"
 #include "dpdrng/rng/mt.hpp"
 #include "dpdrng/rng/stream.hpp"
 #include "dpdrng/stats/summary.hpp"
 #include "dpdrng/version.hpp"
+#include "bench_rng_scalar.hpp"
 
 namespace dpdrng::cli {
 namespace cmd_bench_rng {
 namespace {
 
 using rng::GeneratorSpec;
+using namespace bench_rng;
 
 struct BenchArgs {
   bool json = false;
@@ -42,35 +43,6 @@ struct BenchArgs {
   std::string filter = ".";
   std::size_t buffer = 2048;
 };
-
-// Modes, in table order. scalar: independent calls one at a time, each output forced into a register
-// (benchmark::DoNotOptimize), so consecutive calls may overlap in the pipeline but are never vectorised.
-// batch: fill_stream() into an L1-resident buffer. scalar-/batch- uniform and gauss: one number per call
-// through the scalar draw<>() and through fill_noise(). scalar-/batch- inverse: one Gaussian number per call
-// through the inverse normal CDF of the block's first word (to_unit_mid, inverse_normal.hpp), scalar and batched
-// (fill_stream(), then the batched Φ⁻¹): the alternative to Box–Muller's pairing of two uniforms.
-enum class Mode { scalar, batch, scalar_uniform, scalar_gauss, scalar_inverse, uniform, gauss, inverse };
-constexpr Mode kModes[] = {Mode::scalar,         Mode::batch,   Mode::scalar_uniform, Mode::scalar_gauss,
-                           Mode::scalar_inverse, Mode::uniform, Mode::gauss,          Mode::inverse};
-
-bool is_scalar(Mode m) {
-  return m == Mode::scalar || m == Mode::scalar_uniform || m == Mode::scalar_gauss || m == Mode::scalar_inverse;
-}
-
-// One number from a block, as the scalar modes draw it.
-template <std::size_t N>
-double scalar_number(Mode mode, const std::array<std::uint64_t, N>& b) {
-  if (mode == Mode::scalar_uniform) return rng::draw<rng::Distribution::uniform>(b);
-  if (mode == Mode::scalar_gauss) return rng::draw<rng::Distribution::gauss>(b);
-  return rng::inverse_normal(rng::to_unit_mid(b[0]));
-}
-
-// The defect generator's numbers carry its injected defect (rng/defect.hpp); its words are the base's.
-double scalar_number(Mode mode, const rng::DefectBlock& b) {
-  if (mode == Mode::scalar_uniform) return rng::draw<rng::Distribution::uniform>(b);
-  if (mode == Mode::scalar_gauss) return rng::draw<rng::Distribution::gauss>(b);
-  return rng::draw<rng::Distribution::gauss>(rng::Feed::inverse, b, b);
-}
 
 const char* mode_name(Mode m) {
   switch (m) {
@@ -113,24 +85,6 @@ std::vector<Row> rows() {
   return out;
 }
 
-// Each benchmark iteration produces this many outputs (words for scalar/batch, numbers for distributions).
-constexpr std::size_t kScalarCalls = 256;
-
-template <class G>
-void scalar_hash(benchmark::State& state, const G& g, Mode mode) {
-  std::uint64_t i = 0;
-  for (auto _ : state) {
-    for (std::size_t k = 0; k < kScalarCalls; ++k) {
-      const auto b = g.stream(1, i++);
-      if (mode == Mode::scalar) {
-        for (auto w : b) benchmark::DoNotOptimize(w);
-      } else {
-        benchmark::DoNotOptimize(scalar_number(mode, b));
-      }
-    }
-  }
-}
-
 // mt19937 (32-bit, two draws a word) and std::mt19937_64 have no counter: one engine, advanced in place.
 template <class Next>
 void scalar_stream(benchmark::State& state, Next next, Mode mode) {
@@ -161,7 +115,7 @@ void run_case(benchmark::State& state, const Row& row, Mode mode, std::size_t bu
     rng::Mt19937 mt(1);
     return scalar_stream(state, [&] { return mt.next64(); }, mode);
   }
-  if (scalar) return rng::with_hash(row.spec, [&](const auto& g) { scalar_hash(state, g, mode); });
+  if (scalar) return time_scalar_hash(state, row.spec, mode);
   if (mode == Mode::batch) {
     std::vector<std::uint64_t> words(buffer);
     for (auto _ : state) {

@@ -6,6 +6,7 @@
 
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/dpd/bilayer.hpp"
+#include "validate.hpp"
 
 namespace dpdrng::dpd {
 
@@ -42,12 +43,8 @@ DpdKernel bilayer_kernel(const BilayerConfig& cfg, double dt) {
 }
 
 namespace {
-[[noreturn]] void bad(const std::string& field, const std::string& why) {
-  throw InputError("invalid " + field + ": " + why);
-}
-void positive(double v, const char* field) {
-  if (!(v > 0) || !std::isfinite(v)) bad(field, std::to_string(v) + " (must be a positive finite number)");
-}
+using validate::bad;
+using validate::positive;
 // Height of H1 above the midplane in the pre-assembled bilayer: 8.5 bond lengths (see build_bilayer).
 double head_height(const BilayerConfig& c) { return 8.5 * c.bond.r0; }
 }  // namespace

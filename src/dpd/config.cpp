@@ -5,6 +5,7 @@
 #include <string>
 
 #include "dpdrng/common/error.hpp"
+#include "validate.hpp"
 
 namespace dpdrng::dpd {
 
@@ -27,13 +28,8 @@ std::string_view to_string(Integrator i) { return i == Integrator::mvv ? "mvv" :
 double WaterConfig::box_length() const { return std::cbrt(particles / density); }
 
 namespace {
-[[noreturn]] void bad(const std::string& field, const std::string& why) {
-  throw InputError("invalid " + field + ": " + why);
-}
-// Written as !(v > 0) so that NaN fails too.
-void positive(double v, const char* field) {
-  if (!(v > 0) || !std::isfinite(v)) bad(field, std::to_string(v) + " (must be a positive finite number)");
-}
+using validate::bad;
+using validate::positive;
 void finite(double v, const char* field) {
   if (!std::isfinite(v)) bad(field, "must be finite");
 }

@@ -1,8 +1,9 @@
 #pragma once
 // Internal to src/dpd: the decomposed force loop (decomposition.hpp) for one keyed hash, and make_decomposed,
-// which picks the family's hash and the distribution. Each family's instantiation is in its own
-// decomposition_<family> file, which includes that family's generator header: the instantiations dominate the
-// check's compile time, and a generator header rebuilds only its own family's.
+// which picks the family's hash. The check's time goes to its geometry (two views of every pair), not to the
+// hash: every round count runs the runtime-rounds hash and the distribution is a run-time field, so there is one
+// instantiation per generator type. Each family's is in its own decomposition_<family> file, which includes that
+// family's generator header, so that a generator header rebuilds only its own family's.
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -19,11 +20,11 @@ namespace {
 
 bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
 
-template <class G, rng::Distribution D>
+template <class G>
 class Decomposed final : public DecomposedForces {
  public:
   Decomposed(G gen, const DecompNoise& noise, const DpdKernel& k, const DomainGrid& g)
-      : gen_(gen), seed_(noise.seed), seeding_(noise.seeding), feed_(noise.feed), k_(k), g_(g) {}
+      : gen_(gen), seed_(noise.seed), seeding_(noise.seeding), feed_(noise.feed), distribution_(noise.distribution), k_(k), g_(g) {}
 
   int words_per_pair() const override { return G::kWords; }
 
@@ -152,8 +153,9 @@ class Decomposed final : public DecomposedForces {
   // Under the blocks feed both owners hash the second block from their own view, rotated (rng::second_input).
   double zeta(const rng::PairInput& seen, const rng::PairInput& canon) const {
     const Block a = block(seen, canon);
-    if (feed_ != rng::Feed::blocks) return rng::draw<D>(feed_, a, a);
-    return rng::draw<D>(feed_, a, block(rng::second_input(seen), rng::second_input(canon)));
+    const Block b = feed_ == rng::Feed::blocks ? block(rng::second_input(seen), rng::second_input(canon)) : a;
+    if (distribution_ == rng::Distribution::gauss) return rng::draw<rng::Distribution::gauss>(feed_, a, b);
+    return rng::draw<rng::Distribution::uniform>(feed_, a, b);
   }
 
   // r_ij = −d, F_ij = s·d: (r_ij)_α (F_ij)_α = −s d_α²; conservative part a w d_α² / r (as PairLoop).
@@ -168,6 +170,7 @@ class Decomposed final : public DecomposedForces {
   std::uint64_t seed_;
   DecompSeeding seeding_;
   rng::Feed feed_;
+  rng::Distribution distribution_;
   DpdKernel k_;
   DomainGrid g_;
   std::vector<int> dom_;
@@ -178,10 +181,8 @@ class Decomposed final : public DecomposedForces {
 template <rng::Family F>
 std::unique_ptr<DecomposedForces> make_decomposed(const rng::GeneratorSpec& spec, const DecompNoise& noise,
                                                   const DpdKernel& kernel, const DomainGrid& domains) {
-  return rng::with_family_hash<F>(spec, [&]<class G>(const G& gen) -> std::unique_ptr<DecomposedForces> {
-    if (noise.distribution == rng::Distribution::gauss)
-      return std::make_unique<Decomposed<G, rng::Distribution::gauss>>(gen, noise, kernel, domains);
-    return std::make_unique<Decomposed<G, rng::Distribution::uniform>>(gen, noise, kernel, domains);
+  return rng::with_family_hash_any_rounds<F>(spec, [&]<class G>(const G& gen) -> std::unique_ptr<DecomposedForces> {
+    return std::make_unique<Decomposed<G>>(gen, noise, kernel, domains);
   });
 }
 

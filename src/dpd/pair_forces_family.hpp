@@ -9,12 +9,8 @@ namespace dpdrng::dpd::detail {
 template <rng::Family F, rng::Seeding S>
 std::unique_ptr<PairForces> make_hashed(const WaterConfig& cfg, const DpdKernel& kernel, std::size_t n) {
   return rng::with_family_hash<F>(cfg.generator, [&]<class G>(const G& gen) -> std::unique_ptr<PairForces> {
-    auto build = [&]<rng::Distribution D>() {
-      HashNoise<rng::PairNoise<G, S, D>> noise{{gen, cfg.seed, cfg.feed}};
-      return make_pair_loop(make_noise_kernel(noise), kernel, cfg.pairs, cfg.threads, n, cfg.taps.pairs);
-    };
-    if (cfg.distribution == rng::Distribution::gauss) return build.template operator()<rng::Distribution::gauss>();
-    return build.template operator()<rng::Distribution::uniform>();
+    const HashNoise<G, S> noise{gen, cfg.seed, cfg.feed, cfg.distribution};
+    return make_pair_loop(make_noise_kernel(noise), kernel, cfg.pairs, cfg.threads, n, cfg.taps.pairs);
   });
 }
 

@@ -14,6 +14,8 @@
 
 #include "run_cli.hpp"
 
+namespace dpdrng_test::cli_test_bad_input {
+
 using namespace dpdrng::cli_test;
 namespace fs = std::filesystem;
 
@@ -381,3 +383,5 @@ TEST(BadInput, MomentsGofChi2dRefuseBadInput) {
   expect_bad("chi2d -f u64 -i " + truncated, "not a whole number of 8-byte words");
   expect_bad("chi2d -f u64 -i " + scratch(".none"), "cannot open");
 }
+
+}  // namespace dpdrng_test::cli_test_bad_input

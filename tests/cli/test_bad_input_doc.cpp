@@ -7,6 +7,8 @@
 #include <set>
 #include <string>
 
+namespace dpdrng_test::cli_test_bad_input_doc {
+
 namespace {
 
 std::set<std::string> registered_tests() {
@@ -47,3 +49,5 @@ TEST(BadInputDoc, EveryRowNamesAnExistingTestAndEveryBadInputTestHasARow) {
       EXPECT_TRUE(in_doc.count(t)) << t << " has no row in docs/bad-input.md";
     }
 }
+
+}  // namespace dpdrng_test::cli_test_bad_input_doc

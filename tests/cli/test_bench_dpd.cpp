@@ -7,7 +7,7 @@
 
 #include "run_cli.hpp"
 
-namespace dpdrng::cli_test {
+namespace dpdrng::cli_test::test_bench_dpd {
 namespace {
 
 TEST(CliBenchDpd, ScalingOnlyReportsEveryPairAndTheSideBySideRuns) {
@@ -56,4 +56,4 @@ TEST(CliBenchDpd, RefusesBadArgumentsBeforeAnyRun) {
 }
 
 }  // namespace
-}  // namespace dpdrng::cli_test
+}  // namespace dpdrng::cli_test::test_bench_dpd

@@ -17,6 +17,8 @@
 #include "dpdrng/rng/tea.hpp"
 #include "run_cli.hpp"
 
+namespace dpdrng_test::cli_test_gen {
+
 using namespace dpdrng::rng;
 using namespace dpdrng::cli_test;
 
@@ -175,3 +177,5 @@ TEST(CliBenchRng, JsonHasContextRowsAndRatios) {
 }
 
 }  // namespace
+
+}  // namespace dpdrng_test::cli_test_gen

@@ -12,6 +12,8 @@
 
 #include "run_cli.hpp"
 
+namespace dpdrng_test::cli_test_simulate {
+
 using namespace dpdrng::cli_test;
 using nlohmann::json;
 
@@ -250,3 +252,5 @@ TEST(CliSimulate, ZetaMomentsInTheJson) {
 }
 
 }  // namespace
+
+}  // namespace dpdrng_test::cli_test_simulate

@@ -6,6 +6,8 @@
 
 #include "dpdrng/common/machine.hpp"
 
+namespace dpdrng_test::common_test_machine {
+
 using namespace dpdrng;
 
 namespace {
@@ -45,3 +47,5 @@ TEST(Machine, SimdWidthMatchesTheCompilersMacros) {
 #endif
   EXPECT_EQ(std::string(simd_name()) == "avx512f", simd_width_bits() == 512);
 }
+
+}  // namespace dpdrng_test::common_test_machine

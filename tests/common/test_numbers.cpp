@@ -8,6 +8,8 @@
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/common/numbers.hpp"
 
+namespace dpdrng_test::common_test_numbers {
+
 using namespace dpdrng;
 
 namespace {
@@ -71,3 +73,5 @@ TEST(Numbers, RealsAreFiniteAndInRange) {
   EXPECT_EQ(describe(RealRange{0, std::numeric_limits<double>::infinity(), true, false}), "a number > 0");
   EXPECT_EQ(describe(RealRange{}), "a finite number");
 }
+
+}  // namespace dpdrng_test::common_test_numbers

@@ -13,7 +13,7 @@
 #include "dpdrng/dpd/bilayer_observables.hpp"
 #include "dpdrng/dpd/pair_forces.hpp"
 
-namespace dpdrng::dpd {
+namespace dpdrng::dpd::test_bilayer_model {
 namespace {
 
 TEST(BilayerModel, TopologyOfOneLipid) {
@@ -189,4 +189,4 @@ TEST(BilayerModel, TotalVirialIsMinusEnergyDerivativeUnderBoxStretch) {
 }
 
 }  // namespace
-}  // namespace dpdrng::dpd
+}  // namespace dpdrng::dpd::test_bilayer_model

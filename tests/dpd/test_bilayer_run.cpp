@@ -7,7 +7,7 @@
 #include "dpdrng/dpd/bilayer.hpp"
 #include "scale.hpp"
 
-namespace dpdrng::dpd {
+namespace dpdrng::dpd::test_bilayer_run {
 namespace {
 
 using test_scale::scaled;
@@ -98,4 +98,4 @@ TEST_F(BilayerCiRun, BondedVirialsMoveTheTension) {
 }
 
 }  // namespace
-}  // namespace dpdrng::dpd
+}  // namespace dpdrng::dpd::test_bilayer_run

@@ -8,7 +8,7 @@
 
 #include "dpdrng/dpd/bonded.hpp"
 
-namespace dpdrng::dpd {
+namespace dpdrng::dpd::test_bonded {
 namespace {
 
 double total_energy(const BondedForces& bf, const System& s, const Topology& t) {
@@ -141,4 +141,4 @@ TEST(Bonded, VirialIsMinusEnergyDerivativeUnderBoxStretch) {
 }
 
 }  // namespace
-}  // namespace dpdrng::dpd
+}  // namespace dpdrng::dpd::test_bonded

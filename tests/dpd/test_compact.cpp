@@ -11,6 +11,8 @@
 
 #include "dpdrng/dpd/pair_loop.hpp"
 
+namespace dpdrng_test::dpd_test_compact {
+
 using dpdrng::dpd::compact_in_range;
 
 namespace {
@@ -71,3 +73,5 @@ TEST(CompactInRange, MatchesThePlainLoopAtEveryLength) {
       }
     }
 }
+
+}  // namespace dpdrng_test::dpd_test_compact

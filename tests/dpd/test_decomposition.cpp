@@ -12,7 +12,7 @@
 #include "dpdrng/rng/seeding_repair.hpp"
 #include "dpdrng/rng/tea.hpp"
 
-namespace dpdrng::dpd {
+namespace dpdrng::dpd::test_decomposition {
 namespace {
 
 std::uint64_t bits(double v) { return std::bit_cast<std::uint64_t>(v); }
@@ -269,4 +269,4 @@ TEST(Decomposition, RejectsStreamsAndBadConfigs) {
 }
 
 }  // namespace
-}  // namespace dpdrng::dpd
+}  // namespace dpdrng::dpd::test_decomposition

@@ -12,7 +12,7 @@
 #include "dpdrng/dpd/pair_forces.hpp"
 #include "dpdrng/dpd/water.hpp"
 
-namespace dpdrng::dpd {
+namespace dpdrng::dpd::test_feed_engine {
 namespace {
 
 WaterConfig run_config(const std::string& gen, int rounds, rng::Feed feed, PairMode pairs, int threads) {
@@ -146,4 +146,4 @@ TEST(FeedEngine, DecompositionRepairsHoldUnderTheBlocksFeed) {
 }
 
 }  // namespace
-}  // namespace dpdrng::dpd
+}  // namespace dpdrng::dpd::test_feed_engine

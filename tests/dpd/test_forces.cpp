@@ -9,6 +9,8 @@
 #include "dpdrng/rng/dispatch.hpp"
 #include "scale.hpp"
 
+namespace dpdrng_test::dpd_test_forces {
+
 using namespace dpdrng;
 using namespace dpdrng::dpd;
 
@@ -244,3 +246,5 @@ TEST(Momentum, ConservedToRoundOff) {
     EXPECT_LT(r.momentum_drift, 1e-11) << to_string(mode);
   }
 }
+
+}  // namespace dpdrng_test::dpd_test_forces

@@ -9,7 +9,7 @@
 
 #include "dpdrng/dpd/line_fit.hpp"
 
-namespace dpdrng::dpd {
+namespace dpdrng::dpd::test_line_fit {
 namespace {
 
 TEST(LineFit, RecoversAnExactLine) {
@@ -56,4 +56,4 @@ TEST(LineFit, DegenerateAbscissaeGiveZero) {
 }
 
 }  // namespace
-}  // namespace dpdrng::dpd
+}  // namespace dpdrng::dpd::test_line_fit

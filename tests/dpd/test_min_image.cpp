@@ -13,6 +13,8 @@
 
 #include "dpdrng/dpd/system.hpp"
 
+namespace dpdrng_test::dpd_test_min_image {
+
 using dpdrng::dpd::min_image;
 
 namespace {
@@ -75,3 +77,5 @@ TEST(MinImage, MatchesBranchyReferenceOnWrappedDifferencesInALoop) {
     }
   }
 }
+
+}  // namespace dpdrng_test::dpd_test_min_image

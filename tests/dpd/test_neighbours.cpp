@@ -11,6 +11,8 @@
 #include "dpdrng/dpd/neighbours.hpp"
 #include "dpdrng/dpd/pair_forces.hpp"
 
+namespace dpdrng_test::dpd_test_neighbours {
+
 using namespace dpdrng;
 using namespace dpdrng::dpd;
 
@@ -192,3 +194,5 @@ TEST(CellsLoop, SmallerTeamThanAskedRunsEveryLayer) {
   for (std::size_t c = 0; c < one.f.size(); ++c)
     ASSERT_EQ(std::bit_cast<std::uint64_t>(one.f[c]), std::bit_cast<std::uint64_t>(inner.f[c])) << "component " << c;
 }
+
+}  // namespace dpdrng_test::dpd_test_neighbours

@@ -9,7 +9,7 @@
 #include "dpdrng/dpd/bilayer.hpp"
 #include "dpdrng/dpd/bilayer_observables.hpp"
 
-namespace dpdrng::dpd {
+namespace dpdrng::dpd::test_nematic {
 namespace {
 
 TEST(NematicOrder, ParallelAxesGiveOne) {
@@ -69,4 +69,4 @@ TEST(NematicOrder, PreAssembledBilayerIsPerfectlyOrdered) {
 }
 
 }  // namespace
-}  // namespace dpdrng::dpd
+}  // namespace dpdrng::dpd::test_nematic

@@ -8,6 +8,8 @@
 
 #include "dpdrng/dpd/observables.hpp"
 
+namespace dpdrng_test::dpd_test_observables {
+
 using namespace dpdrng::dpd;
 
 namespace {
@@ -52,3 +54,5 @@ TEST(Rdf, CellListCountsEqualBruteForceForAnyTeamAndIdealGasIsFlat) {
     EXPECT_NEAR(brute[b], expected, 5 * std::sqrt(expected)) << "bin " << b;
   }
 }
+
+}  // namespace dpdrng_test::dpd_test_observables

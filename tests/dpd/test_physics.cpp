@@ -6,6 +6,8 @@
 #include "dpdrng/dpd/water.hpp"
 #include "scale.hpp"
 
+namespace dpdrng_test::dpd_test_physics {
+
 using namespace dpdrng;
 using namespace dpdrng::dpd;
 
@@ -80,3 +82,5 @@ TEST(WaterPhysics, VelocitiesAreMaxwellian) {
   EXPECT_LT(r.velocity_pdf.error_rate_measured_mean, tol);
   for (int c = 0; c < 3; ++c) EXPECT_LT(r.velocity_pdf.error_rate_measured[c], 1.5 * tol);
 }
+
+}  // namespace dpdrng_test::dpd_test_physics

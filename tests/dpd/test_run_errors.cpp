@@ -11,6 +11,8 @@
 #include "dpdrng/dpd/water.hpp"
 #include "dpdrng/rng/splitmix.hpp"
 
+namespace dpdrng_test::dpd_test_run_errors {
+
 using namespace dpdrng;
 using namespace dpdrng::dpd;
 
@@ -120,3 +122,5 @@ TEST(RunErrors, JackknifeCurvesAreLeaveOneOutSets) {
   EXPECT_GT(r.velocity_pdf.error_rate_kT_mean_sem, 0);
   EXPECT_EQ(r.velocity_pdf.error_rate_kT_mean_sem_dof, double(kStatBlocks - 1));
 }
+
+}  // namespace dpdrng_test::dpd_test_run_errors

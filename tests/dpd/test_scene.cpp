@@ -6,7 +6,7 @@
 #include "dpdrng/dpd/scene.hpp"
 #include "dpdrng/dpd/water.hpp"
 
-namespace dpdrng::dpd {
+namespace dpdrng::dpd::test_scene {
 namespace {
 
 struct Counting : SceneObserver {
@@ -126,4 +126,4 @@ TEST(SceneRun, WaterBlowUpIsReportedWithNullObservables) {
 }
 
 }  // namespace
-}  // namespace dpdrng::dpd
+}  // namespace dpdrng::dpd::test_scene

@@ -14,6 +14,8 @@
 #include "dpdrng/rng/dispatch.hpp"
 #include "scale.hpp"
 
+namespace dpdrng_test::dpd_test_shardlow {
+
 using namespace dpdrng;
 using namespace dpdrng::dpd;
 
@@ -225,3 +227,5 @@ TEST(Shardlow, OnePairFollowsTheS1ClosedForm) {
   sweep.sweep(s, 8);
   EXPECT_EQ(velocities(s), before);
 }
+
+}  // namespace dpdrng_test::dpd_test_shardlow

@@ -20,6 +20,8 @@
 #include "quantities.hpp"
 #include "../temp_dir.hpp"
 
+namespace dpdrng_test::golden_test_golden {
+
 namespace fs = std::filesystem;
 using namespace dpdrng;
 using namespace dpdrng::golden;
@@ -266,3 +268,5 @@ TEST(Golden, Streams) {
   }
   check("streams.digest", runs, true, "the standalone streams of test_golden.cpp");
 }
+
+}  // namespace dpdrng_test::golden_test_golden

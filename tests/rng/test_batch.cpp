@@ -10,6 +10,8 @@
 #include "dpdrng/rng/mt.hpp"
 #include "dpdrng/rng/stream.hpp"
 
+namespace dpdrng_test::rng_test_batch {
+
 using namespace dpdrng::rng;
 
 namespace {
@@ -132,3 +134,5 @@ TEST(Batch, FillUnitIsToUnitOfTheStream) {
 }
 
 }  // namespace
+
+}  // namespace dpdrng_test::rng_test_batch

@@ -11,6 +11,8 @@
 #include "dpdrng/rng/registry.hpp"
 #include "dpdrng/rng/stream.hpp"
 
+namespace dpdrng_test::rng_test_defect {
+
 using namespace dpdrng;
 using namespace dpdrng::rng;
 
@@ -145,3 +147,5 @@ TEST(Defect, Lag1AlongAPairsSteps) {
   EXPECT_NEAR(lag_corr(z, 1), 0.3, 6 * se);
   EXPECT_NEAR(variance(z), 1.1, 6 * 1.1 * std::sqrt(2.0 / double(kN)));
 }
+
+}  // namespace dpdrng_test::rng_test_defect

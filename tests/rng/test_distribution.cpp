@@ -11,6 +11,8 @@
 #include "dpdrng/rng/registry.hpp"
 #include "dpdrng/rng/stream.hpp"
 
+namespace dpdrng_test::rng_test_distribution {
+
 using namespace dpdrng::rng;
 
 namespace {
@@ -178,3 +180,5 @@ TEST(Seeding, CanonicalOrdersAndNegates) {
 }
 
 }  // namespace
+
+}  // namespace dpdrng_test::rng_test_distribution

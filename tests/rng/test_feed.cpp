@@ -12,7 +12,7 @@
 #include "dpdrng/rng/dispatch.hpp"
 #include "dpdrng/rng/registry.hpp"
 
-namespace dpdrng::rng {
+namespace dpdrng::rng::test_feed {
 namespace {
 
 // 32TEA(n) from the cycle as printed: x0 low word, x1 high word, output (x1' << 32) | x0'.
@@ -179,4 +179,4 @@ TEST(Feed, SecondMomentOf32Tea1OnPairsInsideTheCutoff) {
 }
 
 }  // namespace
-}  // namespace dpdrng::rng
+}  // namespace dpdrng::rng::test_feed

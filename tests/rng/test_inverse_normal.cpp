@@ -18,6 +18,8 @@
 #include "dpdrng/rng/inverse_normal.hpp"
 #include "mpfr_value.hpp"
 
+namespace dpdrng_test::rng_test_inverse_normal {
+
 using namespace dpdrng::rng;
 
 namespace {
@@ -211,3 +213,5 @@ TEST(InverseNormal, ToUnitMidCoversTheOpenInterval) {
 }
 
 }  // namespace
+
+}  // namespace dpdrng_test::rng_test_inverse_normal

@@ -16,6 +16,8 @@
 #include "dpdrng/rng/splitmix.hpp"
 #include "dpdrng/rng/tea.hpp"
 
+namespace dpdrng_test::rng_test_kat {
+
 using namespace dpdrng::rng;
 
 namespace {
@@ -253,3 +255,5 @@ TEST(KatMt19937, GslAndStdAgree) {
 }
 
 }  // namespace
+
+}  // namespace dpdrng_test::rng_test_kat

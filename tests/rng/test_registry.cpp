@@ -6,6 +6,8 @@
 #include "dpdrng/rng/dispatch.hpp"
 #include "dpdrng/rng/registry.hpp"
 
+namespace dpdrng_test::rng_test_registry {
+
 using namespace dpdrng::rng;
 
 TEST(Registry, EveryGeneratorIsFoundAsItsFamily) {
@@ -42,3 +44,5 @@ TEST(Registry, CompiledCountsDispatchToFixedRoundTypes) {
   });
   EXPECT_EQ(runtime, 7);
 }
+
+}  // namespace dpdrng_test::rng_test_registry

@@ -14,6 +14,8 @@
 #include "dpdrng/rng/saru.hpp"
 #include "dpdrng/rng/stream.hpp"
 
+namespace dpdrng_test::rng_test_saru {
+
 using namespace dpdrng::rng;
 namespace sd = dpdrng::rng::saru_detail;
 
@@ -110,3 +112,5 @@ TEST(Saru, StreamsPassByteChiSquare) {
 }
 
 }  // namespace
+
+}  // namespace dpdrng_test::rng_test_saru

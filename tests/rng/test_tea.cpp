@@ -5,6 +5,8 @@
 
 #include "dpdrng/rng/tea.hpp"
 
+namespace dpdrng_test::rng_test_tea {
+
 using namespace dpdrng::rng;
 
 // Wheeler & Needham's reference code, 32 cycles, zero key and zero plaintext -> 41ea3a0a 94baa940
@@ -50,3 +52,5 @@ TEST(Tea, Tea64OneCycleByHand) {
   EXPECT_EQ(ab[0], x0);
   EXPECT_EQ(ab[1], x1);
 }
+
+}  // namespace dpdrng_test::rng_test_tea

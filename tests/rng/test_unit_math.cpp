@@ -21,6 +21,8 @@
 #include "dpdrng/rng/simd.hpp"
 #include "mpfr_value.hpp"
 
+namespace dpdrng_test::rng_test_unit_math {
+
 using namespace dpdrng::rng;
 
 namespace {
@@ -260,3 +262,5 @@ TEST(UnitMath, SimdSqrtEqualsStdSqrt) {
 }
 
 }  // namespace
+
+}  // namespace dpdrng_test::rng_test_unit_math

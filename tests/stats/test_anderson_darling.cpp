@@ -11,6 +11,8 @@
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/stats/anderson_darling.hpp"
 
+namespace dpdrng_test::stats_test_anderson_darling {
+
 using namespace dpdrng::stats;
 
 namespace {
@@ -89,3 +91,5 @@ TEST(AndersonDarling, SmallAndBadInput) {
 }
 
 }  // namespace
+
+}  // namespace dpdrng_test::stats_test_anderson_darling

@@ -11,6 +11,8 @@
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/stats/binomial.hpp"
 
+namespace dpdrng_test::stats_test_binomial {
+
 using namespace dpdrng::stats;
 
 namespace {
@@ -160,3 +162,5 @@ TEST(Binomial, ClopperPearsonLargeCounts) {
   EXPECT_GT(hi, 0.990123);
   EXPECT_NEAR(hi - lo, 2 * 2.5758 * std::sqrt(0.990123 * 0.009877 / n), 2e-5);
 }
+
+}  // namespace dpdrng_test::stats_test_binomial

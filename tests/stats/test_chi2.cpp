@@ -10,6 +10,8 @@
 #include "dpdrng/rng/stream.hpp"
 #include "dpdrng/stats/chi2.hpp"
 
+namespace dpdrng_test::stats_test_chi2 {
+
 using namespace dpdrng;
 using namespace dpdrng::stats;
 
@@ -124,3 +126,5 @@ TEST(Chi2Uniform, GoodGeneratorPassesThePapersSetting) {
   EXPECT_GT(r.p_value, 0.05);
   EXPECT_EQ(r.verdict, Verdict::pass);
 }
+
+}  // namespace dpdrng_test::stats_test_chi2

@@ -9,6 +9,8 @@
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/stats/chi2_2d.hpp"
 
+namespace dpdrng_test::stats_test_chi2_2d {
+
 using namespace dpdrng::stats;
 
 namespace {
@@ -75,3 +77,5 @@ TEST(Chi2d, SmallAndBadInput) {
 }
 
 }  // namespace
+
+}  // namespace dpdrng_test::stats_test_chi2_2d

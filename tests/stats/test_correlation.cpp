@@ -12,6 +12,8 @@
 #include "dpdrng/stats/noise_tests.hpp"
 #include "dpdrng/stats/pass_fraction.hpp"
 
+namespace dpdrng_test::stats_test_correlation {
+
 using namespace dpdrng;
 using namespace dpdrng::stats;
 
@@ -147,3 +149,5 @@ TEST(NoiseCorrelation, PerStepAndPerPairRunnersTestTheRightRows) {
   EXPECT_EQ(pairs_pm[77].r, pairs[77].r);
   EXPECT_EQ(pass_fraction(verdicts_of(pairs)).verdict, Verdict::pass);
 }
+
+}  // namespace dpdrng_test::stats_test_correlation

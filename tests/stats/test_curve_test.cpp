@@ -11,6 +11,8 @@
 #include "dpdrng/stats/binomial.hpp"
 #include "dpdrng/stats/curve_test.hpp"
 
+namespace dpdrng_test::stats_test_curve_test {
+
 using namespace dpdrng::stats;
 
 namespace {
@@ -159,3 +161,5 @@ TEST(CurveTest, DetectsAShift) {
   for (int k = 0; k < 200; ++k) detected += run(src, 4, 0.0, 1.0, true).p_value < 0.01;
   EXPECT_GT(detected, 150u);
 }
+
+}  // namespace dpdrng_test::stats_test_curve_test

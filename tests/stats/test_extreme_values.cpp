@@ -9,6 +9,8 @@
 #include "dpdrng/stats/correlation.hpp"
 #include "dpdrng/stats/ttest.hpp"
 
+namespace dpdrng_test::stats_test_extreme_values {
+
 using namespace dpdrng::stats;
 
 namespace {
@@ -81,3 +83,5 @@ TEST(ExtremeValues, CorrelationOfHugeUnrelatedSeriesIsSmall) {
   EXPECT_NEAR(c.r, correlation_ttest(scaled(x, 1e-308), scaled(y, 1e305), 0.01).r, 1e-12);
   EXPECT_LT(std::fabs(c.r), 0.1);
 }
+
+}  // namespace dpdrng_test::stats_test_extreme_values

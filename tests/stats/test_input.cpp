@@ -11,6 +11,8 @@
 #include "dpdrng/rng/distribution.hpp"
 #include "dpdrng/stats/input.hpp"
 
+namespace dpdrng_test::stats_test_input {
+
 using namespace dpdrng;
 using namespace dpdrng::stats;
 
@@ -63,3 +65,5 @@ TEST(StatsInput, FormatNamesAndMissingFiles) {
   EXPECT_THROW(parse_input_format("hex"), InputError);
   EXPECT_THROW(read_values("/nonexistent/dpdrng-input", InputFormat::u64), InputError);
 }
+
+}  // namespace dpdrng_test::stats_test_input

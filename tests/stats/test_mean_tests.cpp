@@ -9,6 +9,8 @@
 #include "dpdrng/stats/mean_tests.hpp"
 #include "dpdrng/stats/summary.hpp"
 
+namespace dpdrng_test::stats_test_mean_tests {
+
 using namespace dpdrng::stats;
 
 namespace {
@@ -164,3 +166,5 @@ TEST(DetectableDifference, UndefinedWithoutDegreesOfFreedom) {
   EXPECT_TRUE(std::isnan(detectable_difference(NAN, 5.0, 0.01, 0.9)));
   EXPECT_TRUE(std::isnan(detectable_difference(1.0, 5.0, 0.0, 0.9)));
 }
+
+}  // namespace dpdrng_test::stats_test_mean_tests

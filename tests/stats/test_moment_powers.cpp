@@ -8,7 +8,7 @@
 
 #include "dpdrng/stats/moments.hpp"
 
-namespace dpdrng::stats {
+namespace dpdrng::stats::test_moment_powers {
 namespace {
 
 void expect_same_moments(const std::vector<double>& x, double tol) {
@@ -52,4 +52,4 @@ TEST(MomentPowers, HandComputed) {
 }
 
 }  // namespace
-}  // namespace dpdrng::stats
+}  // namespace dpdrng::stats::test_moment_powers

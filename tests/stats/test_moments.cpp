@@ -12,6 +12,8 @@
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/stats/moments.hpp"
 
+namespace dpdrng_test::stats_test_moments {
+
 using namespace dpdrng::stats;
 
 namespace {
@@ -118,3 +120,5 @@ TEST(Moments, SmallAndBadInput) {
 }
 
 }  // namespace
+
+}  // namespace dpdrng_test::stats_test_moments

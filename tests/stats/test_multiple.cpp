@@ -7,6 +7,8 @@
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/stats/multiple.hpp"
 
+namespace dpdrng_test::stats_test_multiple {
+
 using namespace dpdrng::stats;
 
 namespace {
@@ -39,3 +41,5 @@ TEST(Multiple, StoufferByHand) {
   EXPECT_TRUE(std::isnan(stouffer_two_sided(std::vector<double>{NAN}, std::vector<double>{1.0})));
   EXPECT_THROW(stouffer_two_sided(std::vector<double>{0.1}, std::vector<double>{}), dpdrng::InputError);
 }
+
+}  // namespace dpdrng_test::stats_test_multiple

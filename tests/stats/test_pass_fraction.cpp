@@ -11,6 +11,8 @@
 #include "dpdrng/stats/pass_fraction.hpp"
 #include "dpdrng/stats/ttest.hpp"
 
+namespace dpdrng_test::stats_test_pass_fraction {
+
 using namespace dpdrng;
 using namespace dpdrng::stats;
 
@@ -94,3 +96,5 @@ TEST(PassFraction, VerdictAgreesWithItsInterval) {
   EXPECT_LT(low.ci_high, 0.99);
   EXPECT_EQ(low.verdict, Verdict::fail);
 }
+
+}  // namespace dpdrng_test::stats_test_pass_fraction

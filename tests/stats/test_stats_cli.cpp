@@ -13,6 +13,8 @@
 #include <algorithm>
 #include <unistd.h>
 
+namespace dpdrng_test::stats_test_stats_cli {
+
 namespace {
 
 struct CliRun {
@@ -176,3 +178,5 @@ TEST(StatsCli, MomentsGofAndChi2dEndToEnd) {
   ASSERT_EQ(weak.code, 0) << weak.out;
   EXPECT_EQ(nlohmann::json::parse(weak.out)["verdict"], "fail");
 }
+
+}  // namespace dpdrng_test::stats_test_stats_cli

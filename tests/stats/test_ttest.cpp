@@ -10,6 +10,8 @@
 #include "dpdrng/rng/stream.hpp"
 #include "dpdrng/stats/ttest.hpp"
 
+namespace dpdrng_test::stats_test_ttest {
+
 using namespace dpdrng;
 using namespace dpdrng::stats;
 
@@ -109,3 +111,5 @@ TEST(Lag1, GoodGeneratorPassesCounterFails) {
   EXPECT_GT(bad.r, 0.99);
   EXPECT_EQ(bad.verdict, Verdict::fail);
 }
+
+}  // namespace dpdrng_test::stats_test_ttest

@@ -12,6 +12,8 @@
 #include "dpdrng/study/report.hpp"
 #include "fake_measure.hpp"
 
+namespace dpdrng_test::study_test_analysis {
+
 using namespace dpdrng::study;
 namespace rng = dpdrng::rng;
 
@@ -328,3 +330,5 @@ TEST(StudyAnalysis, TemperatureLimitFromTheStudysOwnSpread) {
   const Analysis shifted = analyse(cfg, fake_cells(cfg, 3 * t.high));
   EXPECT_TRUE(comparison(find(shifted, "tea32", 1), "temperature_mean").decision.differs);
 }
+
+}  // namespace dpdrng_test::study_test_analysis

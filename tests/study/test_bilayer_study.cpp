@@ -21,6 +21,8 @@
 #include "config_text.hpp"
 #include "../temp_dir.hpp"
 
+namespace dpdrng_test::study_test_bilayer_study {
+
 using namespace dpdrng::study;
 namespace rng = dpdrng::rng;
 namespace dpd = dpdrng::dpd;
@@ -284,3 +286,5 @@ TEST(BilayerStudyCli, BadBilayerConfigExitsTwoAndWritesNothing) {
     EXPECT_FALSE(fs::exists(out));
   }
 }
+
+}  // namespace dpdrng_test::study_test_bilayer_study

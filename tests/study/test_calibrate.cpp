@@ -16,6 +16,8 @@
 #include "fake_measure.hpp"
 #include "../temp_dir.hpp"
 
+namespace dpdrng_test::study_test_calibrate {
+
 using namespace dpdrng;
 using namespace dpdrng::study;
 namespace fs = std::filesystem;
@@ -219,3 +221,5 @@ TEST(Calibrate, PoolRunsTheFirstFeedOnly) {
   EXPECT_EQ(pool.feeds, std::vector<rng::Feed>{rng::Feed::blocks});
   for (const auto& c : enumerate_cells(pool)) EXPECT_EQ(c.feed, rng::Feed::blocks);
 }
+
+}  // namespace dpdrng_test::study_test_calibrate

@@ -18,6 +18,8 @@
 #include "dpdrng/study/store.hpp"
 #include "../temp_dir.hpp"
 
+namespace dpdrng_test::study_test_cli_study {
+
 using namespace dpdrng::study;
 namespace fs = std::filesystem;
 
@@ -232,3 +234,5 @@ TEST(StudyCli, UnreadableCellsAreNamedRecomputedAndReported) {
   EXPECT_NE(report.find("Unreadable cell files"), std::string::npos);
   EXPECT_NE(report.find(files[1].filename().string()), std::string::npos);
 }
+
+}  // namespace dpdrng_test::study_test_cli_study

@@ -9,6 +9,8 @@
 #include "dpdrng/study/sweep.hpp"
 #include "config_text.hpp"
 
+namespace dpdrng_test::study_test_config {
+
 using namespace dpdrng::study;
 namespace rng = dpdrng::rng;
 
@@ -115,3 +117,5 @@ TEST(StudyConfig, PaperStudyCoversBothTeaFamiliesAtAllRounds) {
   for (const auto& cell : enumerate_cells(c)) nist_tea32 += cell.nist && cell.generator == "tea32";
   EXPECT_EQ(nist_tea32, rounds.size());  // every 32TEA variant, once
 }
+
+}  // namespace dpdrng_test::study_test_config

@@ -15,7 +15,7 @@
 #include "../cli/run_cli.hpp"
 #include "../temp_dir.hpp"
 
-namespace dpdrng::study {
+namespace dpdrng::study::test_decomposition_store {
 namespace {
 namespace fs = std::filesystem;
 using cli_test::slurp;
@@ -247,4 +247,4 @@ TEST(DecompositionStore, CliResumesAndWritesTheOutputsOnceEveryCellIsStored) {
 }
 
 }  // namespace
-}  // namespace dpdrng::study
+}  // namespace dpdrng::study::test_decomposition_store

@@ -13,7 +13,7 @@
 #include "../dpd/scale.hpp"
 #include "../temp_dir.hpp"
 
-namespace dpdrng::study {
+namespace dpdrng::study::test_decomposition_sweep {
 namespace {
 
 using namespace dpdrng::dpd;
@@ -150,4 +150,4 @@ TEST(DecompositionSweep, RunsAndWritesItsTable) {
 }
 
 }  // namespace
-}  // namespace dpdrng::study
+}  // namespace dpdrng::study::test_decomposition_sweep

@@ -16,6 +16,8 @@
 #include "dpdrng/study/report.hpp"
 #include "dpdrng/study/sweep.hpp"
 
+namespace dpdrng_test::study_test_feeds {
+
 using namespace dpdrng::study;
 namespace rng = dpdrng::rng;
 using config_text::error_of;
@@ -139,3 +141,5 @@ TEST(StudyFeeds, AnalysisPairsFeedsWithTheirReferenceAndPoolsZeta) {
 }
 
 }  // namespace
+
+}  // namespace dpdrng_test::study_test_feeds

@@ -14,6 +14,8 @@
 #include "dpdrng/study/measure.hpp"
 #include "dpdrng/study/sweep.hpp"
 
+namespace dpdrng_test::study_test_integrators {
+
 using namespace dpdrng;
 using namespace dpdrng::study;
 using config_text::error_of;
@@ -121,3 +123,5 @@ TEST(StudyTime, EachDtRunsTheSameSimulatedTime) {
 }
 
 }  // namespace
+
+}  // namespace dpdrng_test::study_test_integrators

@@ -16,6 +16,8 @@
 #include "dpdrng/study/store.hpp"
 #include "dpdrng/study/sweep.hpp"
 
+namespace dpdrng_test::study_test_stability {
+
 using namespace dpdrng::study;
 namespace fs = std::filesystem;
 
@@ -180,3 +182,5 @@ TEST(StabilityCli, CiStudyReportsEveryCell) {
 }
 
 }  // namespace
+
+}  // namespace dpdrng_test::study_test_stability

@@ -16,6 +16,8 @@
 #include "fake_measure.hpp"
 #include "../temp_dir.hpp"
 
+namespace dpdrng_test::study_test_store {
+
 using namespace dpdrng::study;
 namespace fs = std::filesystem;
 
@@ -314,3 +316,5 @@ TEST(StudyStore, AlteredCellFileNeverReachesHdf5) {
   std::ofstream(p, std::ios::binary | std::ios::trunc) << bytes;
   EXPECT_EQ(store.state(r.cell), Store::State::stored);
 }
+
+}  // namespace dpdrng_test::study_test_store

@@ -8,6 +8,8 @@
 #include "dpdrng/study/config.hpp"
 #include "dpdrng/study/sweep.hpp"
 
+namespace dpdrng_test::study_test_sweep {
+
 using namespace dpdrng::study;
 
 namespace {
@@ -58,3 +60,5 @@ TEST(StudySweep, ShardSyntax) {
   for (const char* bad : {"0/4", "5/4", "1/0", "1", "a/b", "1/2x", "-1/2"})
     EXPECT_THROW(parse_shard(bad), dpdrng::InputError) << bad;
 }
+
+}  // namespace dpdrng_test::study_test_sweep

@@ -48,22 +48,36 @@ inline void feed_zetas(rng::Feed f, const Block* a, const Block* b, double* z, s
   }
 }
 
-template <class PN>  // PN = rng::PairNoise<G, S, D>
+// z[t] for a distribution chosen at run time: one branch per batch, so that a kernel holds the hash loops once
+// for both distributions.
+template <class Block>
+inline void feed_zetas(rng::Distribution d, rng::Feed f, const Block* a, const Block* b, double* z, std::size_t m) {
+  if (d == rng::Distribution::gauss)
+    feed_zetas<rng::Distribution::gauss>(f, a, b, z, m);
+  else
+    feed_zetas<rng::Distribution::uniform>(f, a, b, z, m);
+}
+
+// A keyed hash G under seeding S (rng::pair_block); the distribution and the feed are run-time fields.
+template <class G, rng::Seeding S>
 struct HashNoise {
-  using Block = typename PN::Generator::Block;
-  static constexpr int kWords = PN::Generator::kWords;
+  using Block = typename G::Block;
+  static constexpr int kWords = G::kWords;
   static constexpr bool kStream = false;
   static constexpr bool kZero = false;
-  PN pn;
+  G gen;
+  std::uint64_t seed = 0;
+  rng::Feed feed_ = rng::Feed::halves;
+  rng::Distribution distribution = rng::Distribution::gauss;
 
-  rng::Feed feed() const { return pn.feed; }
+  rng::Feed feed() const { return feed_; }
   void begin_step(std::size_t) {}
-  Block raw(const rng::PairInput& p, std::size_t) const { return rng::pair_block<PN::kSeeding>(pn.gen, p, pn.seed); }
+  Block raw(const rng::PairInput& p, std::size_t) const { return rng::pair_block<S>(gen, p, seed); }
   Block raw2(const rng::PairInput& p, std::size_t) const {
-    return rng::pair_block<PN::kSeeding>(pn.gen, rng::second_input(p), pn.seed);
+    return rng::pair_block<S>(gen, rng::second_input(p), seed);
   }
   void zetas(const Block* a, const Block* b, double* z, std::size_t m) const {
-    feed_zetas<PN::kDistribution>(pn.feed, a, b, z, m);
+    feed_zetas(distribution, feed_, a, b, z, m);
   }
 };
 

@@ -120,6 +120,15 @@ decltype(auto) dispatch_rounds(const GeneratorSpec& s, Rounds<Rs...>, F&& f) {
   return dispatch_rounds<G, Rs...>(s, std::forward<F>(f));
 }
 
+// No compiled counts: every count runs the runtime-rounds instantiation.
+template <template <int> class G, class F>
+decltype(auto) dispatch_rounds(const GeneratorSpec& s, Rounds<>, F&& f) {
+  G<0> g;
+  g.key = s.key;
+  g.rounds = s.rounds;
+  return f(g);
+}
+
 // The defect's parameters are in its name.
 template <class G, class F>
 decltype(auto) keyed(const GeneratorSpec& s, F&& f) {
@@ -130,26 +139,41 @@ decltype(auto) keyed(const GeneratorSpec& s, F&& f) {
 }
 }  // namespace detail
 
+namespace detail {
+template <Family Fam, int... Rs, class F>
+decltype(auto) family_hash(const GeneratorSpec& s, Rounds<Rs...> compiled, F&& f) {
+  if constexpr (Fam == Family::tea32)
+    return dispatch_rounds<Tea32>(s, compiled, std::forward<F>(f));
+  else if constexpr (Fam == Family::tea64)
+    return dispatch_rounds<Tea64>(s, compiled, std::forward<F>(f));
+  else if constexpr (Fam == Family::philox4x32)
+    return dispatch_rounds<Philox4x32>(s, compiled, std::forward<F>(f));
+  else if constexpr (Fam == Family::threefry2x64)
+    return dispatch_rounds<Threefry2x64>(s, compiled, std::forward<F>(f));
+  else if constexpr (Fam == Family::splitmix64)
+    return keyed<SplitMix64>(s, std::forward<F>(f));
+  else if constexpr (Fam == Family::saru)
+    return keyed<Saru>(s, std::forward<F>(f));
+  else {
+    static_assert(Fam == Family::defect, "mt19937 is not a keyed hash");
+    return keyed<Defect>(s, std::forward<F>(f));
+  }
+}
+}  // namespace detail
+
 // Calls f(generator) with a concrete keyed-hash type of the family (whose generator header the caller includes);
 // its compiled round counts are compile-time constants, any other count runs the runtime-rounds instantiation.
 template <Family Fam, class F>
 decltype(auto) with_family_hash(const GeneratorSpec& s, F&& f) {
-  if constexpr (Fam == Family::tea32)
-    return detail::dispatch_rounds<Tea32>(s, compiled_rounds<Fam>(), std::forward<F>(f));
-  else if constexpr (Fam == Family::tea64)
-    return detail::dispatch_rounds<Tea64>(s, compiled_rounds<Fam>(), std::forward<F>(f));
-  else if constexpr (Fam == Family::philox4x32)
-    return detail::dispatch_rounds<Philox4x32>(s, compiled_rounds<Fam>(), std::forward<F>(f));
-  else if constexpr (Fam == Family::threefry2x64)
-    return detail::dispatch_rounds<Threefry2x64>(s, compiled_rounds<Fam>(), std::forward<F>(f));
-  else if constexpr (Fam == Family::splitmix64)
-    return detail::keyed<SplitMix64>(s, std::forward<F>(f));
-  else if constexpr (Fam == Family::saru)
-    return detail::keyed<Saru>(s, std::forward<F>(f));
-  else {
-    static_assert(Fam == Family::defect, "mt19937 is not a keyed hash");
-    return detail::keyed<Defect>(s, std::forward<F>(f));
-  }
+  return detail::family_hash<Fam>(s, compiled_rounds<Fam>(), std::forward<F>(f));
+}
+
+// The same with one instantiation per family, the runtime-rounds one, for every count: for code whose time is
+// not spent in the hash, where a copy per compiled count would cost compile time and buy nothing. The values are
+// those of with_family_hash (the rounds are the same integer operations, unrolled or not).
+template <Family Fam, class F>
+decltype(auto) with_family_hash_any_rounds(const GeneratorSpec& s, F&& f) {
+  return detail::family_hash<Fam>(s, Rounds<>{}, std::forward<F>(f));
 }
 
 }  // namespace dpdrng::rng

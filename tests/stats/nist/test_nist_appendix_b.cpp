@@ -8,6 +8,8 @@
 #include "dpdrng/stats/nist/tests.hpp"
 #include "nist_test_util.hpp"
 
+namespace dpdrng_test::stats_nist_test_nist_appendix_b {
+
 using namespace dpdrng::stats::nist;
 using testing_::Constant;
 
@@ -91,3 +93,5 @@ TEST(AppendixB, BatteryGives188PValuesForAMillionBits) {
 }
 
 }  // namespace
+
+}  // namespace dpdrng_test::stats_nist_test_nist_appendix_b

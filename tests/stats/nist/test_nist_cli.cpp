@@ -9,6 +9,8 @@
 
 #include "nist_test_util.hpp"
 
+namespace dpdrng_test::stats_nist_test_nist_cli {
+
 using namespace dpdrng::stats::nist;
 
 namespace {
@@ -85,3 +87,5 @@ TEST(NistCli, BenchRuns) {
 }
 
 }  // namespace
+
+}  // namespace dpdrng_test::stats_nist_test_nist_cli

@@ -6,6 +6,8 @@
 #include "dpdrng/stats/nist/tests.hpp"
 #include "nist_test_util.hpp"
 
+namespace dpdrng_test::stats_nist_test_nist_examples {
+
 using namespace dpdrng::stats::nist;
 using testing_::Constant;
 
@@ -176,3 +178,5 @@ TEST(Sp80022Examples, RandomExcursionsVariant) {  // 2.15.8: e, J = 1490
 //   applicability test in test_nist_inputs.cpp).
 
 }  // namespace
+
+}  // namespace dpdrng_test::stats_nist_test_nist_examples

@@ -9,6 +9,8 @@
 #include "dpdrng/stats/nist/battery.hpp"
 #include "dpdrng/stats/nist/tests.hpp"
 
+namespace dpdrng_test::stats_nist_test_nist_fuzz_findings {
+
 using namespace dpdrng::stats::nist;
 
 namespace {
@@ -65,3 +67,5 @@ TEST(NistFuzzFindings, EveryApplicablePValueOfShortInputsIsAProbability) {
       }
   }
 }
+
+}  // namespace dpdrng_test::stats_nist_test_nist_fuzz_findings

@@ -13,6 +13,8 @@
 #include "dpdrng/stats/nist/tests.hpp"
 #include "nist_test_util.hpp"
 
+namespace dpdrng_test::stats_nist_test_nist_inputs {
+
 using namespace dpdrng::stats::nist;
 
 namespace {
@@ -221,3 +223,5 @@ TEST(NistAssessment, RandomExcursionsCountOnlyApplicableSequences) {
 }
 
 }  // namespace
+
+}  // namespace dpdrng_test::stats_nist_test_nist_inputs

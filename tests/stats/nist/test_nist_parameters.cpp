@@ -11,6 +11,8 @@
 #include "dpdrng/stats/nist/battery.hpp"
 #include "dpdrng/stats/nist/tests.hpp"
 
+namespace dpdrng_test::stats_nist_test_nist_parameters {
+
 using namespace dpdrng::stats::nist;
 using NistTest = dpdrng::stats::nist::Test;
 
@@ -129,3 +131,5 @@ TEST(NistParameters, CheckParametersNamesTheFieldOfEveryTest) {
   p.overlapping_K = 0;
   EXPECT_EQ(check_parameters(NistTest::OverlappingTemplate, p)->field, "overlapping_K");
 }
+
+}  // namespace dpdrng_test::stats_nist_test_nist_parameters
