@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <ostream>
+#include <string>
+#include <string_view>
+
+#include "dpdrng/common/error.hpp"
 
 namespace dpdrng::dpd {
 
@@ -73,10 +77,24 @@ Stat make_stat(const std::vector<double>& x) {
   return s;
 }
 
+std::string_view to_string(RunState s) {
+  switch (s) {
+    case RunState::ok: return "ok";
+    case RunState::unstable: return "unstable";
+    case RunState::disrupted: return "disrupted";
+  }
+  return "?";
+}
+
+RunState parse_run_state(std::string_view name) {
+  for (RunState s : {RunState::ok, RunState::unstable, RunState::disrupted})
+    if (to_string(s) == name) return s;
+  throw InputError("unknown run state \"" + std::string(name) + "\" (known: ok, unstable, disrupted)");
+}
+
 std::string RunStatus::text() const {
   if (state == RunState::ok) return "ok";
-  return std::string(state == RunState::unstable ? "unstable" : "disrupted") + " at step " + std::to_string(step) +
-         ": " + detail;
+  return std::string(to_string(state)) + " at step " + std::to_string(step) + ": " + detail;
 }
 
 std::ostream& operator<<(std::ostream& o, const RunStatus& s) { return o << s.text(); }

@@ -105,19 +105,12 @@ Stat stat_of(const json& j) {
 
 // A run's status as its three parts, so that reading it back gives the same RunStatus.
 json status_record(const dpd::RunStatus& s) {
-  const char* state = s.state == dpd::RunState::ok ? "ok" : s.state == dpd::RunState::unstable ? "unstable" : "disrupted";
-  return {{"state", state}, {"step", s.step}, {"detail", s.detail}};
+  return {{"state", dpd::to_string(s.state)}, {"step", s.step}, {"detail", s.detail}};
 }
 
 dpd::RunStatus status_of(const json& j) {
-  const std::string state = j.at("state").get<std::string>();
   dpd::RunStatus s;
-  if (state == "unstable")
-    s.state = dpd::RunState::unstable;
-  else if (state == "disrupted")
-    s.state = dpd::RunState::disrupted;
-  else if (state != "ok")
-    throw std::runtime_error("unknown run state \"" + state + "\"");
+  s.state = dpd::parse_run_state(j.at("state").get<std::string>());
   s.step = j.at("step").get<std::int64_t>();
   s.detail = j.at("detail").get<std::string>();
   return s;

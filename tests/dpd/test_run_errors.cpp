@@ -7,6 +7,7 @@
 #include <cmath>
 #include <vector>
 
+#include "dpdrng/common/error.hpp"
 #include "dpdrng/dpd/result.hpp"
 #include "dpdrng/dpd/water.hpp"
 #include "dpdrng/rng/splitmix.hpp"
@@ -121,6 +122,17 @@ TEST(RunErrors, JackknifeCurvesAreLeaveOneOutSets) {
   EXPECT_EQ(r.msd.diffusion_sem_dof, double(kStatBlocks - 1));
   EXPECT_GT(r.velocity_pdf.error_rate_kT_mean_sem, 0);
   EXPECT_EQ(r.velocity_pdf.error_rate_kT_mean_sem_dof, double(kStatBlocks - 1));
+}
+
+// The store writes a run's state by name and reads it back: every name parses to its state, the text of a
+// status names it, and an unknown name is the user's error, not a crash.
+TEST(RunState, NamesRoundTrip) {
+  for (RunState st : {RunState::ok, RunState::unstable, RunState::disrupted})
+    EXPECT_EQ(parse_run_state(to_string(st)), st) << to_string(st);
+  EXPECT_EQ(RunStatus::unstable(12, "NaN force").text(), "unstable at step 12: NaN force");
+  EXPECT_EQ(RunStatus::disrupted(3, "lipid lost").text(), "disrupted at step 3: lipid lost");
+  EXPECT_THROW(parse_run_state("exploded"), InputError);
+  EXPECT_THROW(parse_run_state(""), InputError);
 }
 
 }  // namespace dpdrng_test::dpd_test_run_errors

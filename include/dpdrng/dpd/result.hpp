@@ -7,6 +7,7 @@
 #include <iosfwd>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "dpdrng/dpd/pair_forces.hpp"
@@ -82,6 +83,9 @@ struct Series {
 // How a run ended. unstable: it blew up at `step` and its observables mean nothing; disrupted (the bilayer): a
 // lipid left the membrane at `step`, the run went on to the end and its observables are data.
 enum class RunState { ok, unstable, disrupted };
+
+std::string_view to_string(RunState s);          // "ok", "unstable", "disrupted"
+RunState parse_run_state(std::string_view name);  // the inverse; throws InputError for any other name
 
 struct RunStatus {
   RunState state = RunState::ok;
