@@ -24,7 +24,13 @@ template <class G>
 class Decomposed final : public DecomposedForces {
  public:
   Decomposed(G gen, const DecompNoise& noise, const DpdKernel& k, const DomainGrid& g)
-      : gen_(gen), seed_(noise.seed), seeding_(noise.seeding), feed_(noise.feed), distribution_(noise.distribution), k_(k), g_(g) {}
+      : gen_(gen),
+        seed_(noise.seed),
+        seeding_(noise.seeding),
+        feed_(noise.feed),
+        distribution_(noise.distribution),
+        k_(k),
+        g_(g) {}
 
   int words_per_pair() const override { return G::kWords; }
 
