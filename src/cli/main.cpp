@@ -17,9 +17,11 @@ std::vector<std::pair<int, Attach>>& commands();
 
 namespace {
 
-// ~15 us of pause instructions where one takes 140 cycles, a few where it takes 10: beside a busy loop on one of two
-// cores, 3000 still left a two-thread paper run at twice the one-thread time, 300 000 (the default) at 25 times.
-constexpr const char* kGompSpinCount = "300";
+// ~0.1 ms of spinning where a pause takes 40 ns (Intel Xeon family 6 model 167): longer than most waits at a barrier of
+// the cells loop, where a thread that went to sleep costs the step a wake-up, and short against a scheduler's
+// slice, which a thread spinning beside another process's busy loop would burn. Systems small enough for
+// each wait to matter more than that run on one thread anyway (dpd::team_threads).
+constexpr const char* kGompSpinCount = "3000";
 
 // Help and version text go to standard output like any result: a lost one is a write error.
 int exit_with_text(CLI::App& app, const CLI::ParseError& e) {
@@ -53,8 +55,8 @@ std::string subcommand_message(CLI::App& root) {
 }
 
 // libgomp reads its wait policy once, when it is loaded, before main(): unless OMP_WAIT_POLICY or GOMP_SPINCOUNT
-// says otherwise, a thread waiting at a barrier spins 300 000 pause instructions before it sleeps, up to ~15 ms
-// where a pause takes 140 cycles. On a machine shared with other work the spinning thread holds a core that a
+// says otherwise, a thread waiting at a barrier spins 300 000 pause instructions before it sleeps, ~12 ms where
+// a pause takes 40 ns. On a machine shared with other work the spinning thread holds a core that a
 // preempted team-mate needs, and a two-thread run ends up slower than one thread. Unless the user chose a
 // policy, the process therefore runs itself again, once, with a short spin (kGompSpinCount).
 void bound_openmp_spin(char** argv) {

@@ -40,7 +40,9 @@ void RunOptions::add_noise_and_output(CLI::App& app, const Help& help, std::uint
       ->capture_default_str();
   add_integer(app, "--seed", seed, "noise seed (pair-step key, mt19937 seed)");
   add_integer(app, "--init-seed", init_seed, "seed of the initial configuration");
-  add_threads(app, threads, "OpenMP threads (0 = default); results are identical for any count");
+  add_threads(app, threads,
+              "OpenMP threads (0 = default); results are identical for any count; systems under 1024 beads "
+              "run on one (their steps are too short to share)");
   add_integer(app, "--sample-every", sample_every, help.sample_every, {1, kIntMax});
   app.add_flag("--json", json, "machine-readable output");
   app.add_flag("--quiet,-q", quiet, "no progress on stderr");

@@ -1,6 +1,5 @@
 // run_bilayer: the engine's pair loop (any noise) plus bonds and bending through the integrator's force
 // callback, with the membrane's observables.
-#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -29,6 +28,7 @@ WaterConfig pair_config(const BilayerConfig& c, std::uint64_t seed) {
   w.feed = c.feed;
   w.seed = seed;
   w.threads = c.threads;
+  w.team_beads = c.team_beads;
   return w;
 }
 
@@ -136,10 +136,10 @@ class BilayerObserver : public SceneObserver {
 BilayerResult run_bilayer(const BilayerConfig& in, const RunHooks& hooks) {
   BilayerConfig cfg = in;
   cfg.generator = rng::validated(in.generator);
-  if (cfg.threads == 0) cfg.threads = omp_get_max_threads();
   BilayerState st = build_bilayer(cfg);  // validates
   System& s = st.system;
   const std::size_t n = s.size();
+  cfg.threads = team_threads(cfg.threads, n, cfg.team_beads);
   const BondedForces bonded{cfg.bond, cfg.bend};
 
   // The random force's amplitude σ/√Δt is part of the pair kernel, so each Δt gets its own pair loop. Keyed

@@ -30,8 +30,6 @@ class NoiseKernelOf final : public NoiseKernel {
   }
 
   std::size_t row(const RowBatch& b, int thread) override {
-    if constexpr (!Noise::kStream)
-      if (!b.tap[0]) return row_in_range(b, thread);
     const std::size_t m = b.m;
     Scratch& sc = scratch(thread, m);
     Block* blk = sc.blk.data();
@@ -64,31 +62,17 @@ class NoiseKernelOf final : public NoiseKernel {
     return k;
   }
 
-  // A hash's block is a function of the pair alone: the pairs outside r_c need none.
-  std::size_t row_in_range(const RowBatch& b, int thread) {
-    const std::size_t k = compact_in_range(b.i + 1, b.m, b.rc2, b.dx, b.dy, b.dz, b.r2, b.j);
-    Scratch& sc = scratch(thread, k);
-    const auto input = [&](std::size_t t) { return rng::PairInput{b.i, b.j[t], b.dx[t], b.dy[t], b.dz[t], b.step}; };
-    const auto slot = [&](std::size_t t) { return b.slot + (b.j[t] - b.i - 1); };
-    Block* blk = sc.blk.data();
-    for (std::size_t t = 0; t < k; ++t) blk[t] = noise_.raw(input(t), slot(t));
-    if (noise_.feed() == rng::Feed::blocks)
-      for (std::size_t t = 0; t < k; ++t) sc.blk2[t] = noise_.raw2(input(t), slot(t));
-    noise_.zetas(blk, sc.blk2.data(), b.zeta, k);
-    return k;
-  }
-
-  void bead(const BeadBatch& b, int thread) override {
+  void pairs(const PairBatch& b, int thread) override {
     const std::size_t k = b.k;
     Scratch& sc = scratch(thread, k);
     Block* blk = sc.blk.data();
     for (std::size_t t = 0; t < k; ++t) {
-      const rng::PairInput p{b.i, b.j[t], b.dx[t], b.dy[t], b.dz[t], b.step};
+      const rng::PairInput p{b.i[t], b.j[t], b.dx[t], b.dy[t], b.dz[t], b.step};
       blk[t] = noise_.raw(rng::canonical(p), b.slot + t);
     }
     if (noise_.feed() == rng::Feed::blocks)
       for (std::size_t t = 0; t < k; ++t) {
-        const rng::PairInput p{b.i, b.j[t], b.dx[t], b.dy[t], b.dz[t], b.step};
+        const rng::PairInput p{b.i[t], b.j[t], b.dx[t], b.dy[t], b.dz[t], b.step};
         sc.blk2[t] = noise_.raw2(rng::canonical(p), b.slot + t);
       }
     noise_.zetas(blk, sc.blk2.data(), b.zeta, k);

@@ -42,7 +42,7 @@ std::unique_ptr<PairForces> baseline_or_stream(const WaterConfig& cfg, const Dpd
 std::unique_ptr<PairForces> make_pair_forces(const WaterConfig& in, const DpdKernel& kernel, std::size_t n) {
   WaterConfig cfg = in;
   cfg.generator = rng::validated(in.generator);
-  if (cfg.threads <= 0) cfg.threads = omp_get_max_threads();
+  cfg.threads = team_threads(cfg.threads, n, cfg.team_beads);
   const bool gauss = cfg.distribution == rng::Distribution::gauss;
   const rng::Family family = rng::family_of(cfg.generator.name);
   if (cfg.noise_override != NoiseOverride::off || family == rng::Family::mt19937)

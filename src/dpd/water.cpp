@@ -1,7 +1,5 @@
 #include "dpdrng/dpd/water.hpp"
 
-#include <omp.h>
-
 #include <algorithm>
 #include <cmath>
 
@@ -106,10 +104,10 @@ void label(const WaterConfig& cfg, std::size_t n, double L, RunResult& r) {
 RunResult run_water(const WaterConfig& in, const RunHooks& hooks) {
   WaterConfig cfg = in;
   cfg.generator = rng::validated(in.generator);
-  if (cfg.threads == 0) cfg.threads = omp_get_max_threads();
   cfg.validate();
 
   const std::size_t n = static_cast<std::size_t>(cfg.particles);
+  cfg.threads = team_threads(cfg.threads, n, cfg.team_beads);
   const double L = cfg.box_length();
   System s = make_fluid(n, Box{{L, L, L}}, cfg.kT, cfg.init_seed);
   const DpdKernel kernel = pair_force_kernel(cfg);

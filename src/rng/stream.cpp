@@ -75,10 +75,12 @@ simd::f64x8 widen(simd::f32x16 v, bool high) {
 #endif
 }
 
-// One-word blocks: not a vectorised loop but GNU vectors, because the single-precision log reads a 16-entry table
-// that the auto-vectoriser would turn into scalar loads and a register permutes in one instruction
-// (unit_math_f32.hpp); its kernels are templates that the scalar draw runs on one lane, so the bits agree.
-void gauss_words32(const std::uint64_t* w, std::size_t n, double* o) {
+}  // namespace
+
+// Not a vectorised loop but GNU vectors, because the single-precision log reads a 16-entry table that the
+// auto-vectoriser would turn into scalar loads and a register permutes in one instruction (unit_math_f32.hpp);
+// its kernels are templates that the scalar draw runs on one lane, so the bits agree.
+void box_muller_words(const std::uint64_t* w, std::size_t n, double* o) {
   std::size_t c = 0;
   for (; c + 16 <= n; c += 16) {
     const BoxMullerParts32x16 p = box_muller_parts32(word_halves(w + c, false), word_halves(w + c, true));
@@ -88,6 +90,8 @@ void gauss_words32(const std::uint64_t* w, std::size_t n, double* o) {
   }
   for (; c < n; ++c) o[c] = box_muller(std::array<std::uint64_t, 1>{w[c]});
 }
+
+namespace {
 
 template <int W>
 void gauss_words64(const std::uint64_t* w, std::size_t n, double* o) {
@@ -112,7 +116,7 @@ void map_words(Distribution dist, std::span<const std::uint64_t> words, std::spa
   if (dist == Distribution::uniform) {
     for (std::size_t c = 0; c < n; ++c) o[c] = uniform_unit_variance(block_at<W>(w, c));
   } else if constexpr (W == 1) {
-    gauss_words32(w, n, o);
+    box_muller_words(w, n, o);
   } else {
     gauss_words64<W>(w, n, o);
   }

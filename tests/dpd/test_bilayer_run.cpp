@@ -20,6 +20,7 @@ BilayerConfig short_run(const char* gen, int rounds, std::int64_t steps) {
   c.equilibrate = steps / 2;
   c.sample_every = 5;
   c.threads = 1;
+  c.team_beads = 0;  // IndependentOfThreadCount asks for a team of two
   return c;
 }
 

@@ -34,12 +34,12 @@ Rows random_rows(std::size_t m, double inside_fraction, std::uint64_t seed) {
   return r;
 }
 
-// The branchy loop, one pair at a time: the reference.
-std::size_t plain(std::uint32_t first_j, double rc2, Rows& r) {
+// The branchy loop, one pair at a time: the reference. Partners first_j + t, or ids[t] when given.
+std::size_t plain(std::uint32_t first_j, double rc2, Rows& r, const std::uint32_t* ids = nullptr) {
   std::size_t k = 0;
   for (std::size_t t = 0; t < r.r2.size(); ++t) {
     if (!(r.r2[t] < rc2)) continue;
-    r.j[k] = first_j + std::uint32_t(t);
+    r.j[k] = ids ? ids[t] : first_j + std::uint32_t(t);
     r.dx[k] = r.dx[t], r.dy[k] = r.dy[t], r.dz[k] = r.dz[t], r.r2[k] = r.r2[t];
     ++k;
   }
@@ -72,6 +72,26 @@ TEST(CompactInRange, MatchesThePlainLoopAtEveryLength) {
         EXPECT_EQ(ka, 0u);
       }
     }
+}
+
+// The cells loop's form: partners read from a candidate list (here in descending order, so that an index
+// written from t instead of ids[t] would show).
+TEST(CompactInRange, PartnerListMatchesThePlainLoop) {
+  for (const std::size_t m : {0, 1, 41, 64, 65, 200}) {
+    Rows a = random_rows(m, 0.15, 91 + m);
+    std::vector<std::uint32_t> ids(m);
+    for (std::size_t t = 0; t < m; ++t) ids[t] = std::uint32_t(10'000 - 3 * t);
+    Rows b = a;
+    const std::size_t ka = compact_in_range([&](std::size_t t) { return ids[t]; }, m, 1.0, a.dx.data(),
+                                            a.dy.data(), a.dz.data(), a.r2.data(), a.j.data());
+    const std::size_t kb = plain(0, 1.0, b, ids.data());
+    ASSERT_EQ(ka, kb) << m;
+    for (std::size_t t = 0; t < ka; ++t) {
+      EXPECT_EQ(a.j[t], b.j[t]);
+      EXPECT_EQ(std::bit_cast<std::uint64_t>(a.r2[t]), std::bit_cast<std::uint64_t>(b.r2[t]));
+      EXPECT_EQ(std::bit_cast<std::uint64_t>(a.dz[t]), std::bit_cast<std::uint64_t>(b.dz[t]));
+    }
+  }
 }
 
 }  // namespace dpdrng_test::dpd_test_compact

@@ -21,6 +21,7 @@ WaterConfig run_config(const std::string& gen, int rounds, rng::Feed feed, PairM
   c.feed = feed;
   c.pairs = pairs;
   c.threads = threads;
+  c.team_beads = 0;  // a team even for the paper's 256 beads: the sums must not depend on it
   c.steps = 300;
   c.equilibrate = 50;
   return c;

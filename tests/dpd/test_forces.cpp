@@ -194,6 +194,7 @@ TEST(Determinism, OneAndTwoThreadsGiveTheSameBits) {
       cfg.pairs = mode;
       cfg.generator = rng::validated({gen, 0});
       cfg.observables = false;
+      cfg.team_beads = 0;  // 500 beads: under the one-thread size
       cfg.threads = 1;
       const Snapshot a = run_snapshot(cfg);
       cfg.threads = 2;
@@ -207,6 +208,24 @@ TEST(Determinism, OneAndTwoThreadsGiveTheSameBits) {
     }
 }
 
+// A system under team_beads runs on one thread whatever was asked; the run says which count it used.
+TEST(TeamThreads, SmallSystemsRunOnOneThread) {
+  EXPECT_EQ(team_threads(2, 256), 1);
+  EXPECT_EQ(team_threads(2, kTeamBeads - 1), 1);
+  EXPECT_EQ(team_threads(2, kTeamBeads), 2);
+  EXPECT_EQ(team_threads(3, 24000), 3);
+  EXPECT_EQ(team_threads(2, 256, 0), 2);
+  EXPECT_GE(team_threads(0, 24000), 1);
+  WaterConfig cfg;
+  cfg.steps = 3;
+  cfg.equilibrate = 0;
+  cfg.observables = false;
+  cfg.threads = 2;
+  EXPECT_EQ(run_water(cfg).timings.threads, 1);
+  cfg.team_beads = 0;
+  EXPECT_EQ(run_water(cfg).timings.threads, 2);
+}
+
 // The defect generator reads its base at the step before as well: still a pure function of pair and step.
 TEST(Determinism, DefectGeneratorOneAndTwoThreads) {
   for (PairMode mode : {PairMode::all, PairMode::cells}) {
@@ -218,6 +237,7 @@ TEST(Determinism, DefectGeneratorOneAndTwoThreads) {
     cfg.generator = rng::validated({"defect:variance=0.05,lag1=0.3,mean=0.01", 0});
     cfg.seeding = rng::Seeding::pair_step;
     cfg.observables = false;
+    cfg.team_beads = 0;
     cfg.threads = 1;
     const Snapshot a = run_snapshot(cfg);
     cfg.threads = 2;

@@ -125,6 +125,7 @@ Forces forces(const System& start, PairMode mode, const char* gen, int threads) 
   cfg.pairs = mode;
   cfg.generator = rng::validated({gen, 0});
   cfg.threads = threads;
+  cfg.team_beads = 0;
   auto pf = make_pair_forces(cfg, make_kernel(25, 1, 4.5, 1, 0.04), s.size());
   Taps taps;
   Forces out;

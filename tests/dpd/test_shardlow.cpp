@@ -121,6 +121,7 @@ TEST(Shardlow, ConservesMomentumToRoundOff) {
 // Velocities after `steps` steps of a run with `threads` threads, and its result.
 std::pair<std::vector<double>, RunResult> run_velocities(WaterConfig cfg, int threads) {
   cfg.threads = threads;
+  cfg.team_beads = 0;  // 500 beads: under the one-thread size
   std::vector<double> v;
   RunHooks hooks;
   hooks.observe = [&](std::int64_t step, const System& s) {

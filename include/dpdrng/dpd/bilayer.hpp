@@ -61,6 +61,7 @@ struct BilayerConfig {
   rng::Feed feed = rng::Feed::halves;
   std::uint64_t seed = 1;
   int threads = 0;
+  std::size_t team_beads = kTeamBeads;  // as WaterConfig::team_beads
   // Sampling: profiles, order and the integrity check every sample_every steps
   int sample_every = 10;
   double profile_bin = 0.2;

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "dpdrng/dpd/system.hpp"
 #include "dpdrng/rng/registry.hpp"
 
 namespace dpdrng::dpd {
@@ -69,6 +70,7 @@ struct WaterConfig {
   std::uint64_t seed = 1;         // pair-step key word, and the seed of the mt19937 reference stream
   std::uint64_t init_seed = 2021; // initial positions and velocities (the same for every generator)
   int threads = 0;                // 0 = OpenMP's default
+  std::size_t team_beads = kTeamBeads;  // fewer beads run on one thread (team_threads); 0: any size shares
   // Sampling of observables (every k-th production step)
   int sample_every = 10;
   int vpdf_bins = 60;

@@ -43,7 +43,7 @@ class SortedCells {
  public:
   static constexpr int kForward = 13;
   // Below this many beads, sorting and copying them serially costs less than a parallel region's fork.
-  static constexpr std::size_t kParallelBeads = 1024;
+  static constexpr std::size_t kParallelBeads = kTeamBeads;
   // Cells at least rc wide. If the box is too small for the grid (fewer than 3 cells along x or y, or 4
   // along z), one cell holds every bead and owns every pair. Called outside a parallel region, or by every
   // thread of one (orphaned worksharing: callers can run more work in the same region); returns with a barrier.

@@ -1,20 +1,26 @@
 #pragma once
 // The pair loop, compiled once (pair_loop.cpp), around a per-noise kernel (noise_kernel.hpp) that it calls once
-// per batch of pairs: a row's partners (all mode) or a cell bead's partners (cells mode), never per pair.
-//   all:   row i does its partners j > i in two passes: geometry (separation, r², and the generator call for
-//          every pair, as the paper does), then forces for the pairs inside r_c. The split keeps the first
-//          pass free of branches so the compiler can vectorise the hash. Reactions are added serially.
+// per batch of pairs: a group of rows (all mode) or a layer of cells (cells mode), never per pair.
+//   all:   row i does its partners j > i: geometry (separation, r²) for all, then the pairs inside r_c kept
+//          (compact_in_range). Under a hash, sixteen rows collect their pairs so, draw the noise of all of
+//          them in one batch (a hash's block depends on the pair alone, so the pairs outside r_c need none),
+//          then do their forces row by row. A stream, which owns a number per pair slot, and a tapped step,
+//          which records every pair's words, draw every pair of a row (NoiseKernel::row). Reactions are added
+//          serially.
 //   cells: the beads are sorted by cell every step (neighbours.hpp) and copied into sorted arrays, both
 //          shared by the team (every sorted slot written once, so any team gives the same arrays); each cell
-//          does its own pairs and those with its 13 forward neighbours, writing both forces at once; even
+//          does its own pairs and those with its 13 forward neighbours, writing both forces at once. A layer
+//          of cells collects its pairs inside r_c first and draws their noise in one batch (long enough for
+//          the vectorised hash and Box–Muller), then does the cells' forces in the same order as ever; even
 //          z-layers of cells run in parallel (disjoint writes), and each odd one once its two even
 //          neighbours are done. Each layer's forces go back to the System as soon as they are final.
 //          Generator inputs use the beads' own indices, so nothing but the summation order depends on the
 //          sorting.
-// Both modes turn a row's or a cell bead's blocks into ζ in one batch inside the kernel (the feed is switched
+// Both modes turn a batch's blocks into ζ in one call inside the kernel (the feed is switched
 // on once per batch, not per pair), and compute the second blocks only under the blocks feed.
 #include <algorithm>
 #include <bit>
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -46,11 +52,13 @@ inline void geometry(const double* __restrict x, const double* __restrict y, con
 }
 
 // Keeps the pairs with r² < rc2 (NaN fails), in order, moving them to the front in place and writing their
-// partners first_j + t to j; returns how many. About 1 pair in 20 lies inside r_c in the all-pairs mode, at
-// random: a branch per pair would mispredict, and copying every pair unconditionally costs more than it saves.
-// So each run of 64 pairs is first reduced to a bit mask (no branch), then only its set bits are visited.
-inline std::size_t compact_in_range(std::uint32_t first_j, std::size_t m, double rc2, double* dx, double* dy,
-                                    double* dz, double* r2, std::uint32_t* j) {
+// partners partner(t) to j; returns how many. About 1 pair in 20 lies inside r_c in the all-pairs mode and 1 in
+// 7 among a cell's candidates, at random: a branch per pair would mispredict, and copying every pair
+// unconditionally (a store whose address depends on the count so far) costs more than it saves. So each run of
+// 64 pairs is first reduced to a bit mask (no branch), then only its set bits are visited.
+template <std::invocable<std::size_t> Partner>
+inline std::size_t compact_in_range(Partner partner, std::size_t m, double rc2, double* dx, double* dy, double* dz,
+                                    double* r2, std::uint32_t* j) {
   std::size_t k = 0;
   for (std::size_t base = 0; base < m; base += 64) {
     const std::size_t n = std::min<std::size_t>(64, m - base);
@@ -58,15 +66,22 @@ inline std::size_t compact_in_range(std::uint32_t first_j, std::size_t m, double
     for (std::size_t t = 0; t < n; ++t) inside |= std::uint64_t(r2[base + t] < rc2) << t;
     for (; inside != 0; inside &= inside - 1, ++k) {
       const std::size_t t = base + std::size_t(std::countr_zero(inside));
-      j[k] = first_j + std::uint32_t(t);
+      j[k] = partner(t);
       dx[k] = dx[t], dy[k] = dy[t], dz[k] = dz[t], r2[k] = r2[t];
     }
   }
   return k;
 }
 
-// All mode, row i: its m partners i + 1 … i + m (slots slot, slot + 1, …). A hash draws only the pairs inside
-// r_c; a stream (which owns a number per slot) and a tapped step (which records every pair's words) draw all.
+// The all-pairs rows' form: the partners are first_j, first_j + 1, …
+inline std::size_t compact_in_range(std::uint32_t first_j, std::size_t m, double rc2, double* dx, double* dy,
+                                    double* dz, double* r2, std::uint32_t* j) {
+  return compact_in_range([first_j](std::size_t t) { return first_j + std::uint32_t(t); }, m, rc2, dx, dy, dz, r2,
+                          j);
+}
+
+// All mode under a stream or a tapped step, row i: its m partners i + 1 … i + m (slots slot, slot + 1, …), every
+// pair drawn, then those inside r_c kept.
 struct RowBatch {
   std::uint32_t i;
   std::size_t m;
@@ -79,9 +94,10 @@ struct RowBatch {
   double* zeta;           // out: ζ of the pairs with r² < rc2, in order
 };
 
-// Cells mode, one bead's k in-range partners (bead ids, in any order: the inputs are made canonical).
-struct BeadBatch {
-  std::uint32_t i;
+// A batch of k pairs (i[t], j[t]) inside r_c: a layer's in cells mode (bead ids in any order: the inputs are made
+// canonical), a group of rows' in all mode under a hash.
+struct PairBatch {
+  const std::uint32_t* i;
   const std::uint32_t* j;
   std::size_t k;
   const double *dx, *dy, *dz;
@@ -104,7 +120,7 @@ class NoiseKernel {
   virtual void begin_step(std::size_t slots) = 0;
   // Returns the number of pairs inside r_c (their ζ in b.zeta).
   virtual std::size_t row(const RowBatch& b, int thread) = 0;
-  virtual void bead(const BeadBatch& b, int thread) = 0;
+  virtual void pairs(const PairBatch& b, int thread) = 0;
   // One pair as the loop sees it (p with i < j): its words (words() of them) and ζ.
   virtual void pair(const rng::PairInput& p, std::size_t slot, std::uint64_t* words, double& zeta) const = 0;
   // Timed like the loop uses them: the generator over a batch of pair inputs, the distribution over blocks.

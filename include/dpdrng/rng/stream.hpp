@@ -30,6 +30,10 @@ inline void fill_gauss(const GeneratorSpec& spec, std::uint64_t start, std::uint
   fill_noise(spec, Distribution::gauss, start, first_call, out);
 }
 
+// Box–Muller of one-word blocks: out[k] = box_muller(std::array<std::uint64_t, 1>{words[k]}) bit for bit, sixteen
+// words at a time (the pair loop's batches of 32TEA, SplitMix64 and Saru blocks take this path).
+void box_muller_words(const std::uint64_t* words, std::size_t n, double* out);
+
 // Output words per call (tea64, philox4x32, threefry2x64 give two; the others one).
 int words_per_call(const GeneratorSpec& spec);
 
