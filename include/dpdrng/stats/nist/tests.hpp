@@ -40,6 +40,8 @@ TestResult rank(const BitSequence& s);
 // 2.6  Threshold sqrt(ln(1/0.05) n) (the reference's 2.995732274 n), N0 = 0.95 n/2, variance n 0.95 0.05 / 4,
 // peaks counted among the first n/2 magnitudes including the DC term, as the reference does.
 TestResult fft(const BitSequence& s);
+// The moduli |X_0| .. |X_{n/2-1}| of the DFT of x_i = 2 s_i - 1 (what the test counts), into mag.
+void dft_magnitudes(const BitSequence& s, std::vector<double>& mag);
 
 // The aperiodic (unbordered) m-bit templates in increasing numeric order, first bit most significant: the
 // order of the reference's templates/template<m> files (148 templates for m = 9).
