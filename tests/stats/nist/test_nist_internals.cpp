@@ -1,4 +1,6 @@
-// The spectral test's DFT moduli against slow references: GSL's mixed-radix real FFT and a direct O(n^2) DFT.
+// The fast inner parts of the SP800-22 tests against slow references: the spectral test's DFT moduli against GSL's
+// mixed-radix real FFT and a direct O(n^2) DFT, and the non-overlapping template counts against the scan written
+// out in SP800-22 2.7.4.
 #include <gsl/gsl_fft_real.h>
 #include <gtest/gtest.h>
 
@@ -95,6 +97,71 @@ TEST(FftInternals, PeakCountIsTheModuliBelowTheThreshold) {
     for (double m : mag) below += m < T;
     EXPECT_EQ(fft(s).parameters[2].second, below) << "n=" << n;
   }
+}
+
+// SP800-22 2.7.4: slide a window over the block; on a match count it and move on m bits, otherwise one bit.
+std::size_t scan_count(const BitSequence& s, std::size_t start, std::size_t M, std::uint32_t t, int m) {
+  std::size_t count = 0;
+  for (std::size_t j = 0; j + m <= M;) {
+    if (s.bits_at(start + j, static_cast<unsigned>(m)) == t) {
+      ++count;
+      j += static_cast<std::size_t>(m);
+    } else {
+      ++j;
+    }
+  }
+  return count;
+}
+
+// One block: chi^2 = ((W - lambda) / sigma)^2, computed as the test does, from the scan's count W.
+TEST(NonOverlappingTemplateInternals, OneBlockCountsMatchTheSpecScan) {
+  for (int m : {2, 3, 4, 9, 10}) {
+    const BitSequence s = random_bits(50000 + static_cast<std::size_t>(m), static_cast<unsigned>(m));
+    const std::size_t M = s.size();
+    const auto templates = aperiodic_templates(m);
+    const TestResult r = non_overlapping_template(s, m, templates, 1);
+    const double lambda = (M - m + 1) / std::pow(2, m);
+    const double varW = M * (1.0 / std::pow(2.0, m) - (2.0 * m - 1.0) / std::pow(2.0, 2.0 * m));
+    for (std::size_t t = 0; t < templates.size(); ++t) {
+      const double W = static_cast<double>(scan_count(s, 0, M, templates[t], m));
+      EXPECT_DOUBLE_EQ(r.values[t].statistic, std::pow((W - lambda) / std::sqrt(varW), 2))
+          << "m=" << m << " template " << r.values[t].variant;
+    }
+  }
+}
+
+// Distinct unbordered templates are counted from a histogram of window values; a bordered template in the list
+// (all zeros) forces the restarting scan for every template, a repeated one the most general scan. All three
+// must give the same statistic for the templates they share, block by block.
+TEST(NonOverlappingTemplateInternals, HistogramAgreesWithTheRestartingScans) {
+  for (int m : {2, 3, 5, 9, 10}) {
+    for (int blocks : {1, 8, 13}) {
+      const BitSequence s = random_bits(100003, static_cast<unsigned>(m * 100 + blocks));
+      const auto unbordered = aperiodic_templates(m);
+      auto with_bordered = unbordered;
+      with_bordered.push_back(0);
+      auto with_repeat = unbordered;
+      with_repeat.push_back(unbordered.front());
+      const TestResult fast = non_overlapping_template(s, m, unbordered, blocks);
+      const TestResult restarting = non_overlapping_template(s, m, with_bordered, blocks);
+      const TestResult general = non_overlapping_template(s, m, with_repeat, blocks);
+      for (std::size_t t = 0; t < unbordered.size(); ++t) {
+        ASSERT_EQ(fast.values[t].statistic, restarting.values[t].statistic) << "m=" << m << " blocks=" << blocks;
+        ASSERT_EQ(fast.values[t].statistic, general.values[t].statistic) << "m=" << m << " blocks=" << blocks;
+      }
+    }
+  }
+}
+
+// A bordered template's matches can overlap, and the restart then skips some: 11 in 111 counts once.
+TEST(NonOverlappingTemplateInternals, BorderedTemplateRestartsAfterAMatch) {
+  const BitSequence s = BitSequence::from_ascii("0111011110");
+  EXPECT_EQ(scan_count(s, 0, s.size(), 0b11, 2), 3u);
+  const std::uint32_t t[] = {0b11, 0b01};
+  const TestResult r = non_overlapping_template(s, 2, t, 1);
+  const double lambda = 9 / 4.0, varW = 10 * (1 / 4.0 - 3 / 16.0);
+  EXPECT_DOUBLE_EQ(r.values[0].statistic, std::pow((3 - lambda) / std::sqrt(varW), 2));
+  EXPECT_DOUBLE_EQ(r.values[1].statistic, std::pow((2 - lambda) / std::sqrt(varW), 2));
 }
 
 }  // namespace
