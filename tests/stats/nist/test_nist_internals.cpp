@@ -1,12 +1,14 @@
 // The fast inner parts of the SP800-22 tests against slow references: the spectral test's DFT moduli against GSL's
-// mixed-radix real FFT and a direct O(n^2) DFT, and the non-overlapping template counts against the scan written
-// out in SP800-22 2.7.4.
+// mixed-radix real FFT and a direct O(n^2) DFT, the non-overlapping template counts against the scan written out in
+// SP800-22 2.7.4, and the matrix rank against textbook elimination with row swaps (SP800-22 Appendix F.1).
 #include <gsl/gsl_fft_real.h>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "dpdrng/stats/nist/tests.hpp"
@@ -162,6 +164,48 @@ TEST(NonOverlappingTemplateInternals, BorderedTemplateRestartsAfterAMatch) {
   const double lambda = 9 / 4.0, varW = 10 * (1 / 4.0 - 3 / 16.0);
   EXPECT_DOUBLE_EQ(r.values[0].statistic, std::pow((3 - lambda) / std::sqrt(varW), 2));
   EXPECT_DOUBLE_EQ(r.values[1].statistic, std::pow((2 - lambda) / std::sqrt(varW), 2));
+}
+
+// SP800-22 Appendix F.1's forward elimination: for each column, swap a row holding it into place, clear it below.
+int rank_with_swaps(std::array<std::uint32_t, 32> rows) {
+  int rank = 0;
+  for (int col = 31; col >= 0 && rank < 32; --col) {
+    const std::uint32_t bit = std::uint32_t{1} << col;
+    int pivot = rank;
+    while (pivot < 32 && !(rows[pivot] & bit)) ++pivot;
+    if (pivot == 32) continue;
+    std::swap(rows[rank], rows[pivot]);
+    for (int i = rank + 1; i < 32; ++i)
+      if (rows[i] & bit) rows[i] ^= rows[rank];
+    ++rank;
+  }
+  return rank;
+}
+
+// Random matrices (ranks 32, 31, 30 mostly) and products of a 32 x r and an r x 32 matrix (rank at most r).
+TEST(RankInternals, AgreesWithEliminationWithSwaps) {
+  std::mt19937_64 g(7);
+  std::array<int, 33> seen{};
+  for (int trial = 0; trial < 4000; ++trial) {
+    const int r = trial % 33;
+    std::array<std::uint32_t, 32> rows{};
+    if (trial % 2 == 0) {
+      for (auto& row : rows) row = static_cast<std::uint32_t>(g());
+    } else {
+      std::array<std::uint32_t, 32> basis{};
+      for (int k = 0; k < r; ++k) basis[k] = static_cast<std::uint32_t>(g());
+      for (auto& row : rows) {
+        const std::uint64_t pick = g();
+        for (int k = 0; k < r; ++k)
+          if ((pick >> k) & 1) row ^= basis[k];
+      }
+    }
+    const int want = rank_with_swaps(rows);
+    ASSERT_EQ(binary_rank32(rows), want) << "trial " << trial;
+    ++seen[want];
+  }
+  // The products reach every rank from 0 to 32.
+  for (int r = 0; r <= 32; ++r) EXPECT_GT(seen[r], 0) << "rank " << r;
 }
 
 }  // namespace
