@@ -11,9 +11,9 @@ set(allowed_dpd dpd rng common)
 set(allowed_study study dpd stats rng common)
 set(allowed_cli cli study dpd stats rng common)
 # Third-party headers a layer must not include (a regular expression on the include path).
-set(foreign_rng "^(hdf5|H5|toml\\+\\+/|nlohmann/|gsl/|omp\\.h|Eigen/|CLI/|benchmark/)")
+set(foreign_rng "^(hdf5|H5|toml\\+\\+/|nlohmann/|gsl/|fftw3\\.h|omp\\.h|Eigen/|CLI/|benchmark/)")
 set(foreign_stats "^(hdf5|H5|toml\\+\\+/|CLI/|benchmark/)")
-set(foreign_dpd "^(hdf5|H5|toml\\+\\+/|gsl/|CLI/|benchmark/)")
+set(foreign_dpd "^(hdf5|H5|toml\\+\\+/|gsl/|fftw3\\.h|CLI/|benchmark/)")
 
 set(offences "")
 set(checked 0)

@@ -3,9 +3,9 @@
 # `install-deps.sh fuzz` also installs what the libFuzzer harnesses need (clang, and libFuzzer itself, which
 # Debian ships in libclang-rt-14-dev).
 set -euo pipefail
-pkgs=(build-essential cmake ninja-build libgsl-dev libeigen3-dev libhdf5-dev hdf5-tools libgtest-dev libgmock-dev
-      libbenchmark-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev librandom123-dev libgmp-dev libmpfr-dev
-      gnuplot-nox)
+pkgs=(build-essential cmake ninja-build pkgconf libgsl-dev libfftw3-dev libeigen3-dev libhdf5-dev hdf5-tools
+      libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev librandom123-dev
+      libgmp-dev libmpfr-dev gnuplot-nox)
 [[ "${1:-}" == fuzz ]] && pkgs+=(clang libclang-rt-14-dev)
 missing=()
 for p in "${pkgs[@]}"; do

@@ -84,54 +84,110 @@ int bm_generic(const BitSequence& s, std::size_t start, std::size_t len) {
   return static_cast<int>(L);
 }
 
+// a[r] bit c <-> a[c] bit r (bits counted from the least significant): swap the off-diagonal halves of every
+// block, halving the block size each round.
+void transpose64(std::array<std::uint64_t, 64>& a) {
+  std::uint64_t mask = 0x00000000FFFFFFFFull;
+  for (unsigned j = 32; j != 0; j >>= 1, mask ^= mask << j) {
+    for (unsigned k = 0; k < 64; k = ((k | j) + 1) & ~j) {
+      const std::uint64_t t = ((a[k] >> j) ^ a[k | j]) & mask;
+      a[k] ^= t << j;
+      a[k | j] ^= t;
+    }
+  }
+}
+
+// S[M-N] = bit N of every block (block l in bit l), S[0] = 0: reversed, so that the discrepancy reads S and C
+// forwards. 64 bits of 64 blocks at a time, as one bit-matrix transpose.
+void load_sliced(const BitSequence& s, std::size_t first, std::size_t M, int lanes, std::vector<std::uint64_t>& S) {
+  S.assign(M + 1, 0);
+  std::array<std::uint64_t, 64> a;
+  for (std::size_t N0 = 0; N0 < M; N0 += 64) {
+    for (int l = 0; l < 64; ++l)
+      a[l] = l < lanes ? s.word_at(first + static_cast<std::size_t>(l) * M + N0) : 0;
+    // Word l holds bit N0+b of block l at bit 63-b; after the transpose, word 63-b holds it at bit l.
+    transpose64(a);
+    const std::size_t cnt = std::min<std::size_t>(64, M - N0);
+    for (std::size_t b = 0; b < cnt; ++b) S[M - (N0 + b)] = a[63 - b];
+  }
+}
+
+// Which lanes may lengthen their register: L <= N/2. A lane leaves that set when it grows to L' = N+1-L > N/2,
+// and returns at step 2L'; `back[N]` holds the lanes that return at step N. Unused lanes hold L = M, out of the
+// way of the minimum, and never grow.
+struct GrowState {
+  std::array<int, 64> L{};
+  std::vector<std::uint64_t> back;
+  std::uint64_t low = ~std::uint64_t{0};
+  int min_L = 0, max_L = 0;
+
+  void reset(std::size_t M, int lanes) {
+    for (int l = 0; l < 64; ++l) L[l] = l < lanes ? 0 : static_cast<int>(M);
+    back.assign(M + 1, 0);
+    low = ~std::uint64_t{0};
+    min_L = max_L = 0;
+  }
+  // The lanes among `d` that grow at step N; updates L for them.
+  std::uint64_t grow(std::uint64_t d, std::size_t N) {
+    low |= back[N];
+    const std::uint64_t g = d & low;
+    if (!g) return 0;
+    low &= ~g;
+    for (std::uint64_t rest = g; rest; rest &= rest - 1) {
+      const int l = std::countr_zero(rest);
+      L[l] = static_cast<int>(N) + 1 - L[l];
+      max_L = std::max(max_L, L[l]);
+      const std::size_t at = 2 * static_cast<std::size_t>(L[l]);
+      if (at < back.size()) back[at] |= std::uint64_t{1} << l;
+    }
+    // A plain loop over all 64 lanes, which the compiler turns into a few vector minima.
+    int m = L[0];
+    for (int l = 1; l < 64; ++l) m = std::min(m, L[l]);
+    min_L = m;
+    return g;
+  }
+};
+
 // Berlekamp-Massey on up to 64 blocks at once, bit-sliced: word j of C holds coefficient c_j of every block
 // (block l in bit l), so one AND/XOR serves 64 blocks. The shift x^(N-m) that differs between blocks is avoided
 // by keeping B already shifted (Bx = x^(N-m) B), which every step multiplies by x: a uniform index shift.
+// At step N each lane has deg C <= L and deg Bx <= N+1-L, so words past max(L, N+1-L) over the lanes are zero
+// and the loops stop there. Unused lanes hold C = B = 0 and never change.
 // The blocks are bits [first + l*M, first + (l+1)*M), l < lanes; their complexities go to L_out[l].
 void bm_sliced(const BitSequence& s, std::size_t first, std::size_t M, int lanes, int* L_out) {
   thread_local std::vector<std::uint64_t> S, C, Bbuf;
-  S.assign(M, 0);
+  thread_local GrowState st;
+  load_sliced(s, first, M, lanes, S);
+  st.reset(M, lanes);
+  const std::uint64_t active = lanes == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << lanes) - 1;
   C.assign(M + 3, 0);
   // Bx[j] lives at Bbuf[off + j]; multiplying by x is --off, so every loop below runs forwards (and vectorises).
   Bbuf.assign(2 * M + 6, 0);
   std::size_t off = M + 2;
-  for (int l = 0; l < lanes; ++l) {
-    const std::uint64_t lane = std::uint64_t{1} << l;
-    for (std::size_t N0 = 0; N0 < M; N0 += 64) {
-      const std::uint64_t w = s.word_at(first + static_cast<std::size_t>(l) * M + N0);
-      const std::size_t cnt = std::min<std::size_t>(64, M - N0);
-      // Stored reversed (S[M-1-N] = bit N) so that the discrepancy below reads both arrays forwards.
-      for (std::size_t b = 0; b < cnt; ++b) S[M - 1 - (N0 + b)] |= ((w >> (63 - b)) & 1) ? lane : 0;
-    }
-  }
-  std::array<long, 64> L{};
-  C[0] = ~std::uint64_t{0};
-  Bbuf[off + 1] = ~std::uint64_t{0};  // m = -1: Bx = x^(0 - (-1)) * 1
+  C[0] = active;
+  Bbuf[off + 1] = active;  // m = -1: Bx = x^(0 - (-1)) * 1
+  // The discrepancy d = sum_i c_i s_{N-i} (c_0 = 1), s_{N-i} being S[M-N+i]; step 0 has C = 1.
+  std::uint64_t d = S[M];
   for (std::size_t N = 0; N < M; ++N) {
-    // d = s_N + sum_i c_i s_{N-i}, s_{N-i} being S[M-1-N+i]
-    const std::uint64_t* window = S.data() + (M - 1 - N);
-    std::uint64_t d = window[0];
-    for (std::size_t i = 1; i <= N; ++i) d ^= C[i] & window[i];
-    std::uint64_t grow = 0;
-    if (d) {
-      for (int l = 0; l < 64; ++l)
-        if (((d >> l) & 1) && L[l] <= static_cast<long>(N) / 2) {
-          grow |= std::uint64_t{1} << l;
-          L[l] = static_cast<long>(N) + 1 - L[l];
-        }
-    }
-    // C += Bx where d; next Bx = x * (grow ? old C : Bx).
-    const std::size_t top = std::min(N + 1, M + 1);
-    std::uint64_t* B = Bbuf.data() + off;
+    const std::size_t top = static_cast<std::size_t>(std::max(st.max_L, static_cast<int>(N) + 1 - st.min_L));
+    const std::uint64_t grow = st.grow(d, N);
+    // C += Bx where d; next Bx = x * (grow ? old C : Bx); and the next step's discrepancy from the new C, which
+    // is zero past `top` as well.
+    std::uint64_t* __restrict c_ = C.data();
+    std::uint64_t* __restrict b_ = Bbuf.data() + off;
+    const std::uint64_t* __restrict next = S.data() + (M - N - 1);
+    std::uint64_t d_next = 0;
     for (std::size_t j = 0; j <= top; ++j) {
-      const std::uint64_t c = C[j], b = B[j];
-      C[j] = c ^ (d & b);
-      B[j] = (grow & c) | (~grow & b);
+      const std::uint64_t c = c_[j], b = b_[j], c_new = c ^ (d & b);
+      c_[j] = c_new;
+      b_[j] = (grow & c) | (~grow & b);
+      d_next ^= c_new & next[j];
     }
+    d = d_next;
     --off;
     Bbuf[off] = 0;
   }
-  for (int l = 0; l < lanes; ++l) L_out[l] = static_cast<int>(L[l]);
+  for (int l = 0; l < lanes; ++l) L_out[l] = static_cast<int>(st.L[l]);
 }
 
 }  // namespace

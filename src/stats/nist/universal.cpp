@@ -28,6 +28,19 @@ int reference_L(std::size_t n) {
   return L;
 }
 
+// log2 of a distance between repeats, as log(d) / log(2). Distances are mostly short (mean 2^L), so the values
+// for d < 2^16 are computed once per process; the same expression, so the same bits.
+double log2_distance(long d) {
+  static const std::vector<double> table = [] {
+    std::vector<double> t(std::size_t{1} << 16);
+    const double ln2 = std::log(2.0);
+    for (std::size_t i = 1; i < t.size(); ++i) t[i] = std::log(static_cast<double>(i)) / ln2;
+    return t;
+  }();
+  if (d < static_cast<long>(table.size())) return table[static_cast<std::size_t>(d)];
+  return std::log(static_cast<double>(d)) / std::log(2.0);
+}
+
 }  // namespace
 
 std::optional<ParameterProblem> check_universal(int L, int Q) {
@@ -60,10 +73,9 @@ TestResult universal(const BitSequence& s, int L, int Q) {
   std::vector<long> last(std::size_t{1} << L, 0);
   for (long i = 1; i <= Q; ++i) last[s.bits_at((i - 1) * L, L)] = i;
   double sum = 0;
-  const double ln2 = std::log(2.0);
   for (long i = Q + 1; i <= Q + K; ++i) {
     long& t = last[s.bits_at((i - 1) * L, L)];
-    sum += std::log(static_cast<double>(i - t)) / ln2;
+    sum += log2_distance(i - t);
     t = i;
   }
   const double phi = sum / K;

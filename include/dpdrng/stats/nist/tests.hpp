@@ -6,6 +6,7 @@
 // docs/nist-conventions.md. P-values come from GSL (incomplete gamma, erfc, normal CDF).
 // A parameter outside its rule (parameters.hpp) throws std::invalid_argument; a sequence too short for valid
 // parameters gives "not applicable" with the bits needed.
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -36,10 +37,14 @@ TestResult longest_run(const BitSequence& s);
 
 // 2.5  32x32 matrices, rows of 32 consecutive bits. Needs at least one matrix (1024 bits).
 TestResult rank(const BitSequence& s);
+// Rank over GF(2) of a 32x32 bit matrix, one row per word (what the test counts).
+int binary_rank32(std::array<std::uint32_t, 32> rows);
 
 // 2.6  Threshold sqrt(ln(1/0.05) n) (the reference's 2.995732274 n), N0 = 0.95 n/2, variance n 0.95 0.05 / 4,
 // peaks counted among the first n/2 magnitudes including the DC term, as the reference does.
 TestResult fft(const BitSequence& s);
+// The moduli |X_0| .. |X_{n/2-1}| of the DFT of x_i = 2 s_i - 1 (what the test counts), into mag.
+void dft_magnitudes(const BitSequence& s, std::vector<double>& mag);
 
 // The aperiodic (unbordered) m-bit templates in increasing numeric order, first bit most significant: the
 // order of the reference's templates/template<m> files (148 templates for m = 9).
