@@ -450,7 +450,8 @@ const bool registered = register_command(62, [](CLI::App& root) {
   add_integer(*sub, "--steps-all", a->steps_all, "steps of the 256-bead all-pairs runs", {1, kIntMax});
   add_integer(*sub, "--steps-cells", a->steps_cells, "steps of the cells-mode runs", {1, kIntMax});
   add_integer(*sub, "--particles-cells", a->particles_cells, "beads of the cells-mode system", {2, 50'000'000});
-  add_integer(*sub, "--threads", a->threads, "OpenMP threads for the table (the 256-bead scene runs on one)", {1, 1024});
+  add_integer(*sub, "--threads", a->threads, "OpenMP threads for the table (the 256-bead scene runs on one)",
+              {1, 1024});
   add_integer(*sub, "--repeat", a->repeat, "runs per case (the median is reported); for the scaling, pairs of runs",
               {1, 1000});
   sub->add_flag("--paper", a->paper, "time the paper's full 10 000-step run for tea32(8)/tea32(1)");

@@ -124,7 +124,8 @@ class PairLoop final : public PairForces {
     const bool batched = !Zero && !noise_->stream() && !c.tap;
 #pragma omp parallel for num_threads(threads_) schedule(dynamic, 1)
     for (std::size_t g = 0; g < groups; ++g) {
-      const auto i0 = static_cast<std::uint32_t>(g * kGroup), i1 = static_cast<std::uint32_t>(std::min(n, (g + 1) * kGroup));
+      const auto i0 = static_cast<std::uint32_t>(g * kGroup);
+      const auto i1 = static_cast<std::uint32_t>(std::min(n, (g + 1) * kGroup));
       if (batched) {
         row_group(c, i0, i1, omp_get_thread_num());
         continue;
