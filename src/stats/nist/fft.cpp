@@ -19,24 +19,47 @@ using namespace detail;
 
 namespace {
 
-// One in-place plan per length for the whole process. FFTW's planner is not thread-safe but executing a plan is,
-// on arrays of the alignment it was planned for (fftw_malloc's). FFTW_ESTIMATE plans without timing anything, so
-// the plan, and with it every rounding, depends only on the length and the machine's SIMD. In place, because
-// FFTW's estimated out-of-place plan for 2^20 points takes twice as long (two 8 MB arrays instead of one).
+// In-place plans, kept for the first kKept lengths the process asks for (a battery needs one). FFTW's planner
+// (planning and destroying) must run in one thread at a time, which the mutex ensures; executing a plan may run
+// in any number of threads, on arrays of the alignment it was planned for (fftw_malloc's). FFTW_ESTIMATE plans
+// without timing anything, so the plan, and with it every rounding, depends only on the length and the
+// machine's SIMD. In place, because FFTW's estimated out-of-place plan for 2^20 points takes twice as long (two
+// 8 MB arrays instead of one).
+class Plans;
+Plans& plans();
+
 class Plans {
  public:
+  static constexpr std::size_t kKept = 8;
+
+  // A plan for length n: a kept one, or (once kKept lengths are kept) one of the holder's own, destroyed with
+  // it, so that a caller sweeping lengths (a fuzzer) does not keep a plan for every length it ever tried.
+  struct Lease {
+    fftw_plan plan;
+    bool own;
+    Lease(fftw_plan p, bool o) : plan(p), own(o) {}
+    Lease(const Lease&) = delete;
+    Lease& operator=(const Lease&) = delete;
+    ~Lease() {
+      if (own) plans().destroy(plan);
+    }
+  };
+
   ~Plans() {
     for (auto& [n, p] : plans_) fftw_destroy_plan(p);
   }
-  fftw_plan get(std::size_t n) {
+  Lease get(std::size_t n) {
     std::lock_guard lock(mutex_);
     auto it = plans_.find(n);
-    if (it != plans_.end()) return it->second;
-    const Buffer<fftw_complex> data(n / 2 + 1);
-    const fftw_plan p = fftw_plan_dft_r2c_1d(static_cast<int>(n), reinterpret_cast<double*>(data.data), data.data,
-                                             FFTW_ESTIMATE);
-    if (!p) throw std::runtime_error("FFTW could not plan a transform of length " + std::to_string(n));
-    return plans_.emplace(n, p).first->second;
+    if (it != plans_.end()) return {it->second, false};
+    const fftw_plan p = plan(n);
+    if (plans_.size() >= kKept) return {p, true};
+    plans_.emplace(n, p);
+    return {p, false};
+  }
+  void destroy(fftw_plan p) {
+    std::lock_guard lock(mutex_);
+    fftw_destroy_plan(p);
   }
 
   template <class T>
@@ -51,6 +74,13 @@ class Plans {
   };
 
  private:
+  static fftw_plan plan(std::size_t n) {
+    const Buffer<fftw_complex> data(n / 2 + 1);
+    const fftw_plan p = fftw_plan_dft_r2c_1d(static_cast<int>(n), reinterpret_cast<double*>(data.data), data.data,
+                                             FFTW_ESTIMATE);
+    if (!p) throw std::runtime_error("FFTW could not plan a transform of length " + std::to_string(n));
+    return p;
+  }
   std::mutex mutex_;
   std::map<std::size_t, fftw_plan> plans_;
 };
@@ -94,12 +124,12 @@ const fftw_complex* transform(const BitSequence& s) {
   const std::size_t n = s.size();
   if (n > static_cast<std::size_t>(std::numeric_limits<int>::max()))
     throw std::invalid_argument("FFT: sequence longer than FFTW's int lengths");
-  const fftw_plan plan = plans().get(n);
+  const Plans::Lease plan = plans().get(n);
   thread_local Array a;
   fftw_complex* X = a.get(n);
   double* x = reinterpret_cast<double*>(X);
   fill_plus_minus_one(s, x);
-  fftw_execute_dft_r2c(plan, x, X);
+  fftw_execute_dft_r2c(plan.plan, x, X);
   return X;
 }
 
