@@ -74,7 +74,7 @@ TEST(Pnhln, ResultDoesNotDependOnThePairGenerator) {
 
 // With no pair inside r_c the friction and G vanish and ξ follows only its Ornstein–Uhlenbeck part, which the O
 // step integrates exactly for any Δt: ξ_{n+1} = e^{−γΔt}ξ_n + √(k_BT/μ (1 − e^{−2γΔt})) N(0, 1). Two beads at
-// rest 2 r_c apart (a = 0, so nothing ever moves them), Δt = 0.5 (far beyond any DPD step), γ = 4.5, μ = 10:
+// rest 2.5 r_c apart (a = 0, so nothing ever moves them), Δt = 0.5 (far beyond any DPD step), γ = 4.5, μ = 10:
 // the stationary variance must be k_BT/μ = 0.1 and the lag-1 autocorrelation e^{−γΔt} = 0.105, both to 4
 // standard errors of 50 000 samples (about 1 % and 0.005).
 TEST(Pnhln, AuxiliaryVariableIsExactOrnsteinUhlenbeckWithoutPairs) {
@@ -82,11 +82,12 @@ TEST(Pnhln, AuxiliaryVariableIsExactOrnsteinUhlenbeckWithoutPairs) {
   cfg.gamma = 4.5;
   cfg.dt = 0.5;
   cfg.pnhln_mu = 10;
+  cfg.threads = 1;
   PairwiseNoseHooverLangevin th(cfg);
   System s;
-  s.box = Box{{6, 6, 6}};
+  s.box = Box{{2.9, 2.9, 2.9}};
   s.resize(2);
-  s.x = {1.0, 3.0}, s.y = {1.0, 1.0}, s.z = {1.0, 1.0};
+  s.x = {0.0, 1.45}, s.y = {0.0, 1.45}, s.z = {0.0, 1.45};  // the farthest minimum image: r = 2.51
   const ForceFn none = [](System& sys, VelocityView) {
     sys.fx = {0, 0}, sys.fy = {0, 0}, sys.fz = {0, 0};
     return ForceSums{};
@@ -110,6 +111,32 @@ TEST(Pnhln, AuxiliaryVariableIsExactOrnsteinUhlenbeckWithoutPairs) {
   EXPECT_NEAR(v, 0.1, 4 * var_sem);
   EXPECT_NEAR(c / v, rho, 4 / std::sqrt(double(n)));
   EXPECT_EQ(s.vx, (std::vector<double>{0, 0}));  // no pair, no friction
+}
+
+// Leimkuhler & Shang, J. Comput. Phys. 280, 72 (2015): the pairwise feedback controls the kinetic temperature at
+// every stable Δt (only ξ is stochastic, and G drives it until the pairs' kinetic energy matches k_BT). At their
+// system's parameters (ρ = 3, a = 25, γ = 4.5, k_BT = 1) and Δt = 0.04 and 0.06, where Groot–Warren's λ = 0.5
+// runs 3 % and 6 % hot, ⟨k_BT⟩ must lie within 1 % plus 3 standard errors of 1 (500 beads, 1000 steps; 1000
+// beads and 3000 steps gave 1.002 ± 0.002 and 0.999 ± 0.001). The paper's figures' numbers were not available to
+// this test: the tolerance is the 1 % its frontier uses.
+TEST(Pnhln, KineticTemperatureWithinOnePercentAtLargeTimeSteps) {
+  for (double dt : {0.04, 0.06}) {
+    WaterConfig cfg;
+    cfg.particles = 500;
+    cfg.pairs = PairMode::cells;
+    cfg.gamma = 4.5;
+    cfg.dt = dt;
+    cfg.steps = test_scale::scaled(1000, 400);
+    cfg.equilibrate = cfg.steps / 10;
+    cfg.observables = false;
+    cfg.threads = 1;
+    cfg.integrator = Integrator::pnhln;
+    cfg.generator = rng::validated({"mt19937", 0});
+    const RunResult r = run_water(cfg);
+    ASSERT_TRUE(r.ok()) << r.status;
+    EXPECT_EQ(r.integrator, "pnhln:10");
+    EXPECT_NEAR(r.temperature.mean, 1.0, 0.01 + 3 * r.temperature.sem) << "dt " << dt;
+  }
 }
 
 }  // namespace dpdrng_test::dpd_test_pnhln

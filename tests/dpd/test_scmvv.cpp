@@ -95,25 +95,30 @@ Estimate simulated_variance(OnePair& p, int K, long steps) {
 
 // The reference is exact, not published: the scheme's own discrete Ornstein–Uhlenbeck limit (one pair, fixed
 // weight, no conservative force), whose stationary variance follows from the recursion above for any Δt and K.
-// At γ = 4.5, σ = 3 (k_BT = 1), w = 0.5 the pair's kinetic temperature ⟨u²⟩/2 is below 1 by a known amount:
-// e.g. 0.944 for DPD-VV (K = 1) and 0.907 for K = 5 at Δt = 0.1. Each of Δt = 0.05, 0.1, 0.2 and K = 1, 2, 5
-// must match to 4 batch standard errors (about 0.5 % each), which separates every K from its neighbours and
-// from the continuous 2k_BT.
+// At γ = 4.5, σ = 3 (k_BT = 1), w = 0.5 the pair's kinetic temperature ⟨u²⟩/2 falls below 1 with Δt by a known
+// amount: 0.944 for DPD-VV (K = 1) at Δt = 0.1 and 0.891 at 0.2, 0.899 for K = 5 at 0.1, 0.800 for K = 2 at 0.2
+// (the continuous process: 1). Each must match to 4 batch standard errors (about 1 % each), which tells K = 1
+// from K = 5 at Δt = 0.1 and every case from the continuous 2k_BT.
 TEST(Scmvv, OnePairMatchesItsExactDiscreteOrnsteinUhlenbeckVariance) {
-  const long steps = dpdrng::dpd::test_scale::scaled(200000, 40000);
-  for (double dt : {0.05, 0.1, 0.2})
-    for (int K : {1, 2, 5}) {
-      OnePair p;
-      p.dt = dt;
-      const double exact = exact_variance(p, K);
-      const Estimate e = simulated_variance(p, K, steps);
-      EXPECT_NEAR(e.mean, exact, 4 * e.sem) << "dt " << dt << " K " << K << " (exact " << exact << ")";
-      EXPECT_LT(e.sem, 0.01 * exact) << "dt " << dt << " K " << K;
+  const long steps = dpdrng::dpd::test_scale::scaled(150000, 60000);
+  struct Case {
+    double dt;
+    int K;
+  };
+  for (const Case c : {Case{0.1, 1}, Case{0.1, 5}, Case{0.2, 1}, Case{0.2, 2}}) {
+    OnePair p;
+    p.dt = c.dt;
+    const double exact = exact_variance(p, c.K);
+    const Estimate e = simulated_variance(p, c.K, steps);
+    EXPECT_NEAR(e.mean, exact, 4 * e.sem) << "dt " << c.dt << " K " << c.K << " (exact " << exact << ")";
+    if (!dpdrng::dpd::test_scale::small_scale()) {
+      EXPECT_LT(e.sem, 0.012 * exact) << "dt " << c.dt << " K " << c.K;
+      EXPECT_GT(std::abs(exact - 2.0), 4 * e.sem) << "the case cannot tell the scheme from the continuous process";
     }
-  // The references differ by more than the tolerance: the test can tell K = 1 from K = 2 and K = 5 from 2k_BT.
+  }
+  // The references differ by more than the tolerance: the test tells K = 1 from K = 5.
   OnePair p;
-  EXPECT_GT(std::abs(exact_variance(p, 1) - exact_variance(p, 2)), 0.03);
-  EXPECT_GT(std::abs(exact_variance(p, 5) - 2.0), 0.1);
+  EXPECT_GT(std::abs(exact_variance(p, 1) - exact_variance(p, 5)), 0.08);
 }
 
 // K iterations approach the implicit half kick's fixed point v = v' + ½Δt[F^C + F^R + F^D(v)]: after one step
@@ -168,6 +173,49 @@ TEST(Scmvv, DrawsTheSamePairNoiseAsMvv) {
   EXPECT_EQ(sc.timings.random_numbers, mvv.timings.random_numbers);
   EXPECT_EQ(sc.zeta.n, mvv.zeta.n);
   EXPECT_EQ(sc.zeta.s2, mvv.zeta.s2);
+}
+
+}  // namespace dpdrng_test::dpd_test_scmvv
+
+namespace dpdrng_test::dpd_test_scmvv {
+namespace {
+
+// ρ = 3, a = 25, γ = 4.5 (σ = 3), k_BT = 1: the system of Groot & Warren (1997), Besold et al. (2000) and
+// Nikunen, Karttunen & Vattulainen (2003). 500 beads, cells, Philox pair noise.
+RunResult water(const char* integrator, double dt, std::int64_t steps) {
+  WaterConfig cfg;
+  cfg.particles = 500;
+  cfg.pairs = PairMode::cells;
+  cfg.gamma = 4.5;
+  cfg.dt = dt;
+  cfg.steps = steps;
+  cfg.equilibrate = steps / 10;
+  cfg.generator = rng::validated({"philox4x32", 10});
+  cfg.seeding = rng::Seeding::pair_step;
+  cfg.observables = false;
+  cfg.threads = 1;
+  set_integrator(cfg, integrator, "integrator");
+  return run_water(cfg);
+}
+
+}  // namespace
+
+// Besold, Vattulainen, Karttunen & Polson, Phys. Rev. E 62, R7611 (2000) and Vattulainen et al., J. Chem. Phys.
+// 116, 3967 (2002): re-evaluating the dissipative force with the updated velocities (DPD-VV) brings the kinetic
+// temperature much closer to k_BT than Groot–Warren's λ = 0.5 at the same Δt, and iterating to self-consistency
+// closer still. Their tables' numbers were not available to this test; the reference is that published ordering,
+// with the margins measured here (1000 steps, 500 beads; 1000 beads and 3000 steps gave ⟨k_BT⟩ = 1.060 (MVV),
+// 1.025 (K = 1) and 0.992 (K = 5) at Δt = 0.06, ± 0.003): at Δt = 0.06 DPD-VV's deviation from 1 must be below
+// MVV's by more than two standard errors of each, and K = 5's within 1 % plus 3 standard errors.
+TEST(Scmvv, KineticTemperatureCloserToKTThanGrootWarrenAtDt006) {
+  const std::int64_t steps = test_scale::scaled(1000, 400);
+  const RunResult mvv = water("mvv", 0.06, steps), vv = water("scmvv:1", 0.06, steps),
+                  sc = water("scmvv:5", 0.06, steps);
+  ASSERT_TRUE(mvv.ok() && vv.ok() && sc.ok()) << mvv.status << " / " << vv.status << " / " << sc.status;
+  const double err_mvv = std::abs(mvv.temperature.mean - 1), err_vv = std::abs(vv.temperature.mean - 1);
+  EXPECT_LT(err_vv + 2 * (vv.temperature.sem + mvv.temperature.sem), err_mvv)
+      << vv.temperature.mean << " vs " << mvv.temperature.mean;
+  EXPECT_NEAR(sc.temperature.mean, 1.0, 0.01 + 3 * sc.temperature.sem);
 }
 
 }  // namespace dpdrng_test::dpd_test_scmvv
