@@ -75,15 +75,8 @@ template <class Acc, class Visit>
 Acc PairSweep::sweep(System& s, bool one_thread, Visit&& visit) {
   if (!build_cells(s)) return sweep_all_pairs<Acc>(s, visit);
   sort_by_cell(s);
-  // Slabs in sweep order: colour by colour, each colour's first layers ascending.
-  const int nz = nc_[2];
-  std::vector<int> order;
-  std::vector<std::size_t> colour_start{0};
-  for (int k = 0; k < pair_sweep_detail::kColours; ++k) {
-    for (int layer = 0; layer < nz; ++layer)
-      if (pair_sweep_detail::colour_of(layer, nz) == k) order.push_back(layer);
-    colour_start.push_back(order.size());
-  }
+  std::vector<std::size_t> colour_start;
+  const std::vector<int> order = slab_order(colour_start);
   std::vector<Acc> slab_acc(order.size());
   const int threads = one_thread ? 1 : threads_ > 0 ? threads_ : omp_get_max_threads();
   const Box box = s.box;
@@ -101,6 +94,23 @@ Acc PairSweep::sweep(System& s, bool one_thread, Visit&& visit) {
     const std::uint32_t i = cell_beads_[k];
     s.vx[i] = vx_[k], s.vy[i] = vy_[k], s.vz[i] = vz_[k];
   }
+  return total;
+}
+
+template <class Acc, class Visit>
+Acc PairSweep::replay(Visit&& visit) {
+  std::vector<Acc> slab_acc(slab_pairs_.size());
+  double* const v[3] = {vx_.data(), vy_.data(), vz_.data()};
+  const int threads = threads_ > 0 ? threads_ : omp_get_max_threads();
+#pragma omp parallel num_threads(threads)
+  for (int k = 0; k < pair_sweep_detail::kColours; ++k) {
+    if (colour_start_[k] == colour_start_[k + 1]) continue;  // the same for every thread
+#pragma omp for schedule(static)
+    for (std::size_t b = colour_start_[k]; b < colour_start_[k + 1]; ++b)
+      for (const Pair& p : slab_pairs_[b]) visit(v, p, slab_acc[b]);
+  }
+  Acc total{};
+  for (const Acc& a : slab_acc) total.merge(a);
   return total;
 }
 

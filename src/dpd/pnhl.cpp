@@ -52,36 +52,25 @@ void PairwiseNoseHooverLangevin::kick_half(System& s) const {
   for (std::size_t i = 0; i < n; ++i) vx[i] += h * fx[i], vy[i] += h * fy[i], vz[i] += h * fz[i];
 }
 
-void PairwiseNoseHooverLangevin::friction_half(System& s) {
-  const double rate = -2.0 * xi_ * 0.5 * dt_, inv_rc = 1.0 / rc_;
-  pairs_.sweep<NoSum>(s, false,
-                      [rate, inv_rc](double* const (&v)[3], std::uint32_t a, std::uint32_t b, std::uint32_t,
-                                     std::uint32_t, double dx, double dy, double dz, double r2, NoSum&) {
-                        const double r = std::sqrt(r2);
-                        const double ex = dx / r, ey = dy / r, ez = dz / r;
-                        const double w = 1.0 - r * inv_rc;
-                        double* const vx = v[0];
-                        double* const vy = v[1];
-                        double* const vz = v[2];
-                        const double u = ex * (vx[b] - vx[a]) + ey * (vy[b] - vy[a]) + ez * (vz[b] - vz[a]);
-                        const double d = 0.5 * u * std::expm1(rate * w * w);  // half of u(t) − u
-                        vx[a] -= d * ex, vy[a] -= d * ey, vz[a] -= d * ez;
-                        vx[b] += d * ex, vy[b] += d * ey, vz[b] += d * ez;
-                      });
+void PairwiseNoseHooverLangevin::friction_half() {
+  const double rate = -2.0 * xi_ * 0.5 * dt_;
+  pairs_.replay<NoSum>([rate](double* const (&v)[3], const PairSweep::Pair& p, NoSum&) {
+    const std::uint32_t a = p.a, b = p.b;
+    const double u = p.ex * (v[0][b] - v[0][a]) + p.ey * (v[1][b] - v[1][a]) + p.ez * (v[2][b] - v[2][a]);
+    const double d = 0.5 * u * std::expm1(rate * p.w * p.w);  // half of u(t) − u
+    v[0][a] -= d * p.ex, v[1][a] -= d * p.ey, v[2][a] -= d * p.ez;
+    v[0][b] += d * p.ex, v[1][b] += d * p.ey, v[2][b] += d * p.ez;
+  });
 }
 
-double PairwiseNoseHooverLangevin::pair_g(System& s) {
-  const double two_kT = 2.0 * kT_, inv_rc = 1.0 / rc_;
+double PairwiseNoseHooverLangevin::pair_g() {
+  const double two_kT = 2.0 * kT_;
   return pairs_
-      .sweep<GSum>(s, false,
-                   [two_kT, inv_rc](double* const (&v)[3], std::uint32_t a, std::uint32_t b, std::uint32_t,
-                                    std::uint32_t, double dx, double dy, double dz, double r2, GSum& g) {
-                     const double r = std::sqrt(r2);
-                     const double w = 1.0 - r * inv_rc;
-                     const double u = (dx * (v[0][b] - v[0][a]) + dy * (v[1][b] - v[1][a]) +
-                                       dz * (v[2][b] - v[2][a])) / r;
-                     g.g += w * w * (u * u - two_kT);
-                   })
+      .replay<GSum>([two_kT](double* const (&v)[3], const PairSweep::Pair& p, GSum& g) {
+        const std::uint32_t a = p.a, b = p.b;
+        const double u = p.ex * (v[0][b] - v[0][a]) + p.ey * (v[1][b] - v[1][a]) + p.ez * (v[2][b] - v[2][a]);
+        g.g += p.w * p.w * (u * u - two_kT);
+      })
       .g;
 }
 
@@ -94,13 +83,16 @@ ForceSums PairwiseNoseHooverLangevin::step(System& s, const ForceFn& force) {
   drift_half(s);
   force(s, v);
   kick_half(s);
-  friction_half(s);
-  const double push = 0.5 * dt_ * pair_g(s) / mu_;
+  // The positions stay put from here to the second drift: the pairs are found once.
+  pairs_.record(s);
+  friction_half();
+  const double push = 0.5 * dt_ * pair_g() / mu_;
   const double decay = std::exp(-gamma_ * dt_);
   const double spread = std::sqrt(kT_ / mu_ * -std::expm1(-2.0 * gamma_ * dt_));
   const double zeta = rng::box_muller(std::array<std::uint64_t, 1>{mt_.next64()});
   xi_ = decay * (xi_ + push) + spread * zeta + push;
-  friction_half(s);
+  friction_half();
+  pairs_.release(s);
   drift_half(s);
   const ForceSums sums = force(s, v);
   kick_half(s);

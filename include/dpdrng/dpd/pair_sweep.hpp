@@ -30,7 +30,22 @@ class PairSweep {
   template <class Acc, class Visit>
   Acc sweep(System& s, bool one_thread, Visit&& visit);
 
+  // A scheme that sweeps several times at fixed positions searches once: record() finds the pairs as sweep()
+  // does and keeps each slab's (their slots, ê = d/r and w = 1 − r/r_c) with the velocities copied into cell
+  // order; replay() visits them in the same order, slabs and threads as sweep() would, as often as needed, as
+  // visit(v, pair, acc); release() writes the velocities back to the System.
+  struct Pair {
+    std::uint32_t a, b;
+    double ex, ey, ez, w;
+  };
+  void record(const System& s);
+  template <class Acc, class Visit>
+  Acc replay(Visit&& visit);
+  void release(System& s) const;
+
  private:
+  void record_all_pairs(const System& s);
+  std::vector<int> slab_order(std::vector<std::size_t>& colour_start) const;
   bool build_cells(const System& s);  // false: fewer than 3 cells a side
   void sort_by_cell(const System& s);
   template <class Acc, class Visit>
@@ -43,6 +58,8 @@ class PairSweep {
   int nc_[3] = {0, 0, 0};
   std::vector<std::uint32_t> cell_start_, cell_beads_, bead_cell_;
   std::vector<double> px_, py_, pz_, vx_, vy_, vz_;  // in cell order (bead cell_beads_[k] at k)
+  std::vector<std::vector<Pair>> slab_pairs_;       // record(): each slab's pairs, slabs in sweep order
+  std::vector<std::size_t> colour_start_;           // record(): the slabs of colour k are [start[k], start[k+1])
 };
 
 }  // namespace dpdrng::dpd

@@ -11,8 +11,9 @@
 // force at the positions reached, C: the friction's exact flow pair by pair, D: ξ by G/μ, O: ξ's exact
 // Ornstein–Uhlenbeck flow), two conservative force evaluations a step. C: for one pair, u = ê·v_ij decays as
 // u e^{−2ξw²t} (ξ < 0 makes it grow), each bead taking half the change; the pairs are swept in PairSweep's fixed
-// order (pair_sweep.hpp), so the result does not depend on the thread count. G is summed over the pairs after the
-// first C½ sweep. The noise of O, one Gaussian a step, comes from the mt19937 reference stream seeded with the
+// order (pair_sweep.hpp), so the result does not depend on the thread count. The positions do not move from the
+// first B½ to the second A½: the pairs are found once a step (PairSweep::record) and both C½ sweeps and the sum G,
+// taken after the first, replay them. The noise of O, one Gaussian a step, comes from the mt19937 reference stream seeded with the
 // run's seed (Box–Muller on one 64-bit word): the pair generator, seeding, distribution and feed play no part.
 // ξ starts at 0, its stationary mean.
 #include <cstdint>
@@ -35,8 +36,9 @@ class PairwiseNoseHooverLangevin {
  private:
   void drift_half(System& s) const;
   void kick_half(System& s) const;
-  void friction_half(System& s);  // C over Δt/2 with the current ξ
-  double pair_g(System& s);       // G at the current state
+  // On the pairs and velocities pairs_ recorded: C over Δt/2 with the current ξ; G at the current state.
+  void friction_half();
+  double pair_g();
 
   double rc_, kT_, gamma_, mu_, dt_;
   int threads_;
