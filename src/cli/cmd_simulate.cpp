@@ -173,9 +173,9 @@ const bool registered = register_command(40, [](CLI::App& root) {
       "              K = 1 (the default) is DPD-VV; K from 1 to 100.\n"
       "  pnhln[:mu]  pairwise Nose-Hoover-Langevin thermostat (Leimkuhler & Shang 2015), coupling mu (default 10):\n"
       "              no pair noise; the thermostat variable's noise, one Gaussian a step, comes from the mt19937\n"
-      "              reference stream seeded with --seed, so --generator (other than mt19937), --rounds, --key,\n"
-      "              --seeding, --distribution and --feed are refused. The reported pressure is the\n"
-      "              conservative one.");
+      "              reference stream seeded with --seed, so --generator other than mt19937, --rounds, --key,\n"
+      "              --seeding, --distribution other than gauss and --feed other than halves are refused.\n"
+      "              The reported pressure is the conservative one.");
   auto& c = a->cfg;
   sub->add_option("--scene", a->scene, "scene: water or bilayer (the H3(T6)2 membrane)")->capture_default_str();
   add_integer(*sub, "--particles,-n", c.particles, "number of beads", {2, 50'000'000});
