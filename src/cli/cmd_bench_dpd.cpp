@@ -2,7 +2,8 @@
 // all/cells × generators × rounds, the RNG's share of a step by difference against the same run with ζ = 0
 // (no generator, no distribution) and with the seed words passed unhashed (no generator), and the paper's
 // headline: the all-pairs 256-bead run with tea32(8) against tea32(1) (Okada et al. 2021: RNG 40 % of the
-// time at 8 rounds, 1.5x faster at 1 round). The cells-mode 1- vs 2-thread comparison runs either integrator.
+// time at 8 rounds, 1.5x faster at 1 round). The cells-mode 1- vs 2-thread comparison runs any one integrator;
+// a list of integrators times each one's step against GW-MVV's, the runs interleaved.
 #include <unistd.h>
 
 #include <algorithm>
@@ -76,7 +77,7 @@ dpd::WaterConfig scene(const BenchDpdArgs& a, dpd::PairMode mode, std::int64_t s
   c.steps = c.equilibrate + steps;
   c.observables = false;
   c.threads = a.threads;
-  c.integrator = dpd::parse_integrator(a.integrator);
+  dpd::set_integrator(c, split(a.integrator).front(), "--integrator");
   c.distribution = rng::parse_distribution(a.distribution);
   c.feed = rng::parse_feed(a.feed);
   rng::check_feed(c.distribution, c.feed);
@@ -363,16 +364,113 @@ nlohmann::json to_json(const Oversubscribed& o) {
           {"ratio_2_to_1", o.ratio}, {"pair_ratios", o.ratios}};
 }
 
+// Each integrator's production step against GW-MVV's, on each --pairs scene with tea32(1) (pnhln draws no pair
+// noise): the integrators run in turn, --repeat rounds, so that a burst of other load spreads over all of them;
+// the factor is the ratio of the medians. Jdpd's published factors (its kernel's four schemes) beside them.
+struct IntegratorCost {
+  std::string integrator, pairs;
+  Measured m;
+  double factor = 0;  // median step time / GW-MVV's
+};
+
+// Jdpd (van den Broek et al., J. Cheminform. 10, 2018): GWMVV 1.0, S1MVV 1.1, SCMVV(1) 1.4, SCMVV(5) 2.3, PNHLN 1.9.
+std::optional<double> jdpd_factor(const dpd::WaterConfig& c) {
+  switch (c.integrator) {
+    case dpd::Integrator::mvv: return 1.0;
+    case dpd::Integrator::shardlow: return 1.1;
+    case dpd::Integrator::scmvv:
+      if (c.scmvv_iterations == 1) return 1.4;
+      if (c.scmvv_iterations == 5) return 2.3;
+      return std::nullopt;
+    case dpd::Integrator::pnhln: return 1.9;
+  }
+  return std::nullopt;
+}
+
+std::vector<std::string> compared_integrators(const BenchDpdArgs& a) {
+  std::vector<std::string> names = split(a.integrator);
+  dpd::WaterConfig probe;
+  for (const auto& n : names) dpd::set_integrator(probe, n, "--integrator");  // InputError for a bad entry
+  if (std::find(names.begin(), names.end(), "mvv") == names.end()) names.insert(names.begin(), "mvv");
+  return names;
+}
+
+std::vector<IntegratorCost> measure_integrators(const BenchDpdArgs& a) {
+  std::vector<IntegratorCost> out;
+  for (const auto& p : split(a.pairs)) {
+    const dpd::PairMode mode = dpd::parse_pair_mode(p);
+    std::vector<Case> cases;
+    for (const auto& name : compared_integrators(a)) {
+      dpd::WaterConfig c = scene(a, mode, mode == dpd::PairMode::all ? a.steps_all : a.steps_cells);
+      dpd::set_integrator(c, name, "--integrator");
+      Case k = with_generator(c, "tea32", 1);
+      k.label = c.integrator_name();
+      cases.push_back(k);
+    }
+    std::vector<std::vector<double>> t(cases.size());
+    for (int r = 0; r < a.repeat; ++r)
+      for (std::size_t i = 0; i < cases.size(); ++i) {
+        progress("bench dpd: " + p + " " + cases[i].label + ", round " + std::to_string(r + 1) + " of " +
+                 std::to_string(a.repeat));
+        t[i].push_back(run_once(cases[i]).production_s);
+      }
+    const std::size_t first = out.size();
+    for (std::size_t i = 0; i < cases.size(); ++i)
+      out.push_back({cases[i].label, p, summarise(cases[i], t[i], 0), 0});
+    const auto mvv = std::find_if(out.begin() + first, out.end(), [](const auto& c) { return c.integrator == "mvv"; });
+    for (auto it = out.begin() + first; it != out.end(); ++it) it->factor = it->m.median_s / mvv->m.median_s;
+  }
+  return out;
+}
+
+void print_integrators(const BenchDpdArgs& a, const std::vector<IntegratorCost>& rows) {
+  std::cout << "cost of a step against GW-MVV (tea32(1), median of " << a.repeat << " interleaved runs, " << a.threads
+            << " thread(s)); Jdpd's published factors beside them\n"
+            << std::left << std::setw(7) << "pairs" << std::setw(9) << "beads" << std::setw(14) << "integrator"
+            << std::right << std::setw(14) << "s/step" << std::setw(10) << "factor" << std::setw(8) << "Jdpd" << "\n";
+  for (const auto& c : rows) {
+    dpd::WaterConfig probe;
+    dpd::set_integrator(probe, c.integrator, "--integrator");
+    const auto j = jdpd_factor(probe);
+    std::ostringstream jd;
+    if (j) jd << *j; else jd << "n/a";
+    std::cout << std::left << std::setw(7) << c.pairs << std::setw(9) << c.m.particles << std::setw(14)
+              << c.integrator << std::right << std::setw(14) << std::setprecision(4) << c.m.median_s / c.m.steps
+              << std::setw(10) << std::setprecision(3) << c.factor << std::setw(8) << jd.str() << "\n";
+  }
+}
+
+nlohmann::json to_json(const IntegratorCost& c) {
+  dpd::WaterConfig probe;
+  dpd::set_integrator(probe, c.integrator, "--integrator");
+  const auto j = jdpd_factor(probe);
+  nlohmann::json out = to_json(c.m);
+  out["integrator"] = c.integrator;
+  out["seconds_per_step"] = c.m.median_s / c.m.steps;
+  out["factor_vs_mvv"] = c.factor;
+  out["jdpd_factor"] = j ? nlohmann::json(*j) : nlohmann::json(nullptr);
+  return out;
+}
+
 void run_bench_dpd(const BenchDpdArgs& a) {
   if (a.repeat < 1) throw InputError("--repeat must be at least 1");
   if (a.threads < 1) throw InputError("--threads must be at least 1");
   if (a.steps_all < 1 || a.steps_cells < 1) throw InputError("--steps-all and --steps-cells must be at least 1");
   if (a.scaling_only && !a.scaling) throw InputError("--scaling-only and --no-scaling exclude each other");
   if (a.oversubscribe && a.scaling_only) throw InputError("--oversubscribe and --scaling-only exclude each other");
-  // The table and the paper setting time MVV's pair noise against ζ = 0 and unhashed runs, which Shardlow's
-  // sweep has no counterpart of.
-  if (dpd::parse_integrator(a.integrator) != dpd::Integrator::mvv && !a.scaling_only)
-    throw InputError("--integrator " + a.integrator + " times the 1- vs 2-thread comparison only: add --scaling-only");
+  const bool compare = split(a.integrator).size() > 1;
+  if (split(a.integrator).empty()) throw InputError("--integrator: name at least one integrator");
+  if (compare && (a.scaling_only || a.oversubscribe))
+    throw InputError("--integrator with a list times the integrators against GW-MVV only: drop --scaling-only and "
+                     "--oversubscribe");
+  dpd::WaterConfig probe;
+  for (const auto& name : split(a.integrator)) dpd::set_integrator(probe, name, "--integrator");
+  // The table and the paper setting time MVV's pair noise against ζ = 0 and unhashed runs, which the other
+  // integrators have no counterpart of.
+  if (!compare && probe.integrator != dpd::Integrator::mvv && !a.scaling_only)
+    throw InputError("--integrator " + a.integrator +
+                     " times the 1- vs 2-thread comparison only: add --scaling-only (or list several integrators "
+                     "to time each against mvv)");
   const auto& tea = rng::find_generator("tea32");
   for (int r : parse_list<int>(a.rounds, "--rounds", {1, kIntMax}))
     if (r < tea.min_rounds || r > tea.max_rounds)
@@ -387,6 +485,18 @@ void run_bench_dpd(const BenchDpdArgs& a) {
                     {"simd", simd_name()}, {"threads", a.threads}, {"repeat", a.repeat},
                     {"integrator", a.integrator},
                     {"distribution", a.distribution}, {"feed", a.feed}, {"statistic", "median wall time of the production steps (after a short untimed start)"}};
+  if (compare) {
+    const auto rows = measure_integrators(a);
+    progress("");
+    if (a.json) {
+      for (const auto& c : rows) out["integrators"].push_back(to_json(c));
+      std::cout << out.dump(2) << "\n";
+      return;
+    }
+    std::cout << cpu_model() << ", " << simd_width_bits() << "-bit SIMD (" << simd_name() << ")\n";
+    print_integrators(a, rows);
+    return;
+  }
   if (a.oversubscribe) {
     const auto rows = measure_oversubscription(a);
     progress("");
@@ -442,8 +552,9 @@ const bool registered = register_command(62, [](CLI::App& root) {
   sub->add_option("--pairs", a->pairs, "all, cells or all,cells")->capture_default_str();
   sub->add_option("--distribution", a->distribution, "gauss or uniform")->capture_default_str();
   sub->add_option("--integrator", a->integrator,
-                  "mvv or shardlow (S1 splitting, its sweep coloured for threads; with --scaling-only)")
-      ->check(CLI::IsMember({"mvv", "shardlow"}))
+                  "mvv, shardlow, scmvv[:K] or pnhln[:mu] (simulate --help); one other than mvv with "
+                  "--scaling-only; a comma-separated list (e.g. mvv,shardlow,scmvv:1,scmvv:5,pnhln) times each "
+                  "one's step against mvv's on the --pairs scenes and does nothing else")
       ->capture_default_str();
   sub->add_option("--feed", a->feed, "uniforms feeding the Gaussian: halves, blocks or inverse (simulate --help)")
       ->capture_default_str();

@@ -112,11 +112,28 @@ void print_human(const dpd::RunResult& r) {
             << " ns each (RNG share of a step, by difference against zeta = 0: " << 100 * r.timings.rng_share_estimate << " %)\n";
 }
 
-void run_simulate(SimulateArgs& a) {
+// pnhln draws no pair noise (its thermostat's noise comes from the mt19937 stream): a pair-noise option that
+// names anything else would be silently ignored, so it is refused.
+void check_reference_only(const CLI::App& sub, const SimulateArgs& a) {
+  const auto given = [&](const char* name) { return sub.count(name) > 0; };
+  const auto refuse = [&](const std::string& what) {
+    throw InputError(what + ": --integrator " + a.integrator +
+                     " draws no pair noise (its thermostat's noise comes from the mt19937 reference stream); leave "
+                     "the option out");
+  };
+  if (given("--generator") && a.run.gen.name != "mt19937") refuse("--generator " + a.run.gen.name);
+  for (const char* o : {"--rounds", "--key", "--seeding"})
+    if (given(o)) refuse(o);
+  if (given("--distribution") && a.run.distribution != "gauss") refuse("--distribution " + a.run.distribution);
+  if (given("--feed") && a.run.feed != "halves") refuse("--feed " + a.run.feed);
+}
+
+void run_simulate(SimulateArgs& a, const CLI::App& sub) {
   if (a.scene != "water") throw InputError("unknown scene '" + a.scene + "' (known: water, bilayer)");
   dpd::WaterConfig cfg = a.cfg;
   a.run.apply(cfg);
-  cfg.integrator = dpd::parse_integrator(a.integrator);
+  dpd::set_integrator(cfg, a.integrator, "--integrator");
+  if (cfg.integrator == dpd::Integrator::pnhln) check_reference_only(sub, a);
   cfg.series = !a.run.series_dir.empty();
   cfg.validate();
   if (cfg.series) prepare_output_directory(a.run.series_dir, "--series");
@@ -145,9 +162,20 @@ const bool registered = register_command(40, [](CLI::App& root) {
       "Defaults are the paper's water run: 256 beads, rho 3, a 25, rc 1, kT 1, gamma 6.75, lambda 0.5, dt 0.04,\n"
       "10000 steps (500 equilibration), every pair every step. mt19937 (the reference) draws each step's\n"
       "numbers from one stream in a fixed pair order. --series DIR writes series.csv, velocity_pdf.csv,\n"
-      "msd.csv and rdf.csv. --integrator shardlow: Shardlow's S1 splitting, k_BT much nearer 1 at large dt (the\n"
-      "reported pressure is then the conservative one). A run that blows up still exits 0: its status reads\n"
-      "'unstable at step k: reason'.");
+      "msd.csv and rdf.csv. A run that blows up still exits 0: its status reads 'unstable at step k: reason'.\n"
+      "Integrators (water only):\n"
+      "  mvv         Groot-Warren modified velocity-Verlet with --lambda (the default).\n"
+      "  shardlow    Shardlow's S1 splitting: k_BT much nearer 1 at large dt; the reported pressure is the\n"
+      "              conservative one.\n"
+      "  scmvv[:K]   self-consistent velocity-Verlet (Besold et al. 2000; Vattulainen et al. 2002): the random\n"
+      "              force drawn once a step from the pair noise (--generator, --seeding, --distribution,\n"
+      "              --feed, as mvv), the dissipative force re-evaluated K times with the updated velocities.\n"
+      "              K = 1 (the default) is DPD-VV; K from 1 to 100.\n"
+      "  pnhln[:mu]  pairwise Nose-Hoover-Langevin thermostat (Leimkuhler & Shang 2015), coupling mu (default 10):\n"
+      "              no pair noise; the thermostat variable's noise, one Gaussian a step, comes from the mt19937\n"
+      "              reference stream seeded with --seed, so --generator other than mt19937, --rounds, --key,\n"
+      "              --seeding, --distribution other than gauss and --feed other than halves are refused.\n"
+      "              The reported pressure is the conservative one.");
   auto& c = a->cfg;
   sub->add_option("--scene", a->scene, "scene: water or bilayer (the H3(T6)2 membrane)")->capture_default_str();
   add_integer(*sub, "--particles,-n", c.particles, "number of beads", {2, 50'000'000});
@@ -156,8 +184,9 @@ const bool registered = register_command(40, [](CLI::App& root) {
   add_real(*sub, "--rc", c.rc, "cut-off radius");
   add_thermostat_options(*sub, c);
   add_real(*sub, "--dt", c.dt, "time step");
-  sub->add_option("--integrator", a->integrator, "mvv (Groot-Warren, --lambda) or shardlow (S1 splitting; water only)")
-      ->check(CLI::IsMember({"mvv", "shardlow"}))
+  sub->add_option("--integrator", a->integrator,
+                  "mvv (Groot-Warren, --lambda), shardlow (S1), scmvv[:K] (self-consistent VV, K iterations) or "
+                  "pnhln[:mu] (pairwise Nose-Hoover-Langevin); water only, see below")
       ->capture_default_str();
   add_integer(*sub, "--steps", c.steps, "steps", {1, kInt64Max});
   add_integer(*sub, "--equilibrate", c.equilibrate, "equilibration steps (not sampled)", {0, kInt64Max});
@@ -168,7 +197,7 @@ const bool registered = register_command(40, [](CLI::App& root) {
   sub->callback([a, sub] {
     if (a->scene == "bilayer")
       return simulate_bilayer(*sub, a->cfg, a->run);
-    run_simulate(*a);
+    run_simulate(*a, *sub);
   });
 });
 

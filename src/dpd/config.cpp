@@ -2,9 +2,11 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 
 #include "dpdrng/common/error.hpp"
+#include "dpdrng/common/numbers.hpp"
 #include "validate.hpp"
 
 namespace dpdrng::dpd {
@@ -20,10 +22,62 @@ std::string_view to_string(PairMode m) { return m == PairMode::all ? "all" : "ce
 Integrator parse_integrator(std::string_view name) {
   if (name == "mvv") return Integrator::mvv;
   if (name == "shardlow") return Integrator::shardlow;
-  throw InputError("unknown integrator '" + std::string(name) + "' (known: mvv, shardlow)");
+  if (name == "scmvv") return Integrator::scmvv;
+  if (name == "pnhln") return Integrator::pnhln;
+  throw InputError("unknown integrator '" + std::string(name) + "' (known: mvv, shardlow, scmvv[:K], pnhln[:mu])");
 }
 
-std::string_view to_string(Integrator i) { return i == Integrator::mvv ? "mvv" : "shardlow"; }
+std::string_view to_string(Integrator i) {
+  switch (i) {
+    case Integrator::mvv: return "mvv";
+    case Integrator::shardlow: return "shardlow";
+    case Integrator::scmvv: return "scmvv";
+    case Integrator::pnhln: return "pnhln";
+  }
+  return "mvv";
+}
+
+void set_integrator(WaterConfig& cfg, std::string_view text, const std::string& what) {
+  const std::size_t colon = text.find(':');
+  const std::string_view name = text.substr(0, colon);
+  Integrator kind;
+  try {
+    kind = parse_integrator(name);
+  } catch (const InputError& e) {
+    throw InputError(what + ": " + e.what());
+  }
+  cfg.integrator = kind;
+  if (colon == std::string_view::npos) {
+    if (kind == Integrator::scmvv) cfg.scmvv_iterations = kScmvvIterations;
+    if (kind == Integrator::pnhln) cfg.pnhln_mu = kPnhlnMu;
+    return;
+  }
+  const std::string param(text.substr(colon + 1));
+  const std::string quoted = "'" + std::string(text) + "'";
+  if (kind == Integrator::scmvv) {
+    cfg.scmvv_iterations =
+        static_cast<int>(parse_number<std::int64_t>(param, what + ": the iterations K of " + quoted,
+                                                    {1, static_cast<std::uint64_t>(kScmvvMaxIterations)}));
+    return;
+  }
+  if (kind == Integrator::pnhln) {
+    cfg.pnhln_mu = parse_real(param, what + ": the coupling mu of " + quoted,
+                              RealRange{0.0, std::numeric_limits<double>::infinity(), true, false});
+    return;
+  }
+  throw InputError(what + ": " + quoted + ": " + std::string(name) + " takes no parameter" +
+                   (kind == Integrator::mvv ? " (its lambda is --lambda)" : ""));
+}
+
+std::string WaterConfig::integrator_name() const {
+  if (integrator == Integrator::scmvv) return "scmvv:" + std::to_string(scmvv_iterations);
+  if (integrator == Integrator::pnhln) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "pnhln:%g", pnhln_mu);
+    return buf;
+  }
+  return std::string(to_string(integrator));
+}
 
 double WaterConfig::box_length() const { return std::cbrt(particles / density); }
 
@@ -100,10 +154,14 @@ void WaterConfig::validate() const {
   for (auto [i, j] : taps.pairs)
     if (!(i < j) || j >= static_cast<std::uint32_t>(particles))
       bad("taps.pairs", "(" + std::to_string(i) + ", " + std::to_string(j) + ") needs i < j < particles");
-  if (integrator == Integrator::shardlow && (!taps.raw_steps.empty() || !taps.pairs.empty()))
-    bad("integrator", "shardlow draws its numbers in its own sweep; taps need mvv");
-  if (integrator == Integrator::shardlow && noise_override != NoiseOverride::off)
-    bad("integrator", "shardlow has no noise override (a benchmark of the mvv pair loop)");
+  const bool sweeps = integrator == Integrator::shardlow || integrator == Integrator::pnhln;
+  if (sweeps && (!taps.raw_steps.empty() || !taps.pairs.empty()))
+    bad("integrator", std::string(to_string(integrator)) + " draws no numbers in the pair loop; taps need mvv or scmvv");
+  if (integrator != Integrator::mvv && noise_override != NoiseOverride::off)
+    bad("integrator", std::string(to_string(integrator)) + " has no noise override (a benchmark of the mvv pair loop)");
+  if (scmvv_iterations < 1 || scmvv_iterations > kScmvvMaxIterations)
+    bad("scmvv_iterations", std::to_string(scmvv_iterations) + " (1.." + std::to_string(kScmvvMaxIterations) + ")");
+  if (!(pnhln_mu > 0) || !std::isfinite(pnhln_mu)) bad("pnhln_mu", "must be positive and finite");
   if (!taps.pairs.empty() && generator.name == "mt19937" && pairs == PairMode::cells)
     bad("taps.pairs", "mt19937 gives a pair a number only while it is listed; tap pair series with pairs=all");
 }

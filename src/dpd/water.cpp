@@ -5,7 +5,7 @@
 
 #include "dpdrng/dpd/observables.hpp"
 #include "dpdrng/dpd/scene.hpp"
-#include "dpdrng/dpd/shardlow.hpp"
+#include "dpdrng/dpd/water_integrator.hpp"
 
 namespace dpdrng::dpd {
 
@@ -89,12 +89,15 @@ class WaterObserver : public SceneObserver {
 void label(const WaterConfig& cfg, std::size_t n, double L, RunResult& r) {
   r.generator = cfg.generator.name == "mt19937" ? "mt19937" : rng::describe(cfg.generator);
   if (cfg.noise_override == NoiseOverride::none) r.generator = "none";
+  // pnhln draws only its thermostat's noise, from the mt19937 stream, whatever the pair generator.
+  const bool reference_only = cfg.integrator == Integrator::pnhln;
+  if (reference_only) r.generator = "mt19937";
   if (cfg.noise_override == NoiseOverride::unhashed) r.generator = "unhashed";
-  r.seeding = cfg.generator.name == "mt19937" ? "stream" : std::string(rng::to_string(cfg.seeding));
-  r.distribution = rng::to_string(cfg.distribution);
-  r.feed = rng::to_string(cfg.feed);
+  r.seeding = cfg.generator.name == "mt19937" || reference_only ? "stream" : std::string(rng::to_string(cfg.seeding));
+  r.distribution = reference_only ? "gauss" : rng::to_string(cfg.distribution);
+  r.feed = reference_only ? "halves" : rng::to_string(cfg.feed);
   r.pairs = to_string(cfg.pairs);
-  r.integrator = to_string(cfg.integrator);
+  r.integrator = cfg.integrator_name();
   r.particles = n;
   r.box_length = L;
 }

@@ -56,12 +56,17 @@ std::vector<rng::Feed> valid_feeds(Section& s, const std::string& key, const std
 
 std::vector<std::string> valid_integrators(Section& s, const std::string& key, std::vector<std::string> v) {
   if (v.empty()) s.fail(key, "needs at least one integrator (leave the key out for MVV at the scene's lambda)");
+  std::vector<IntegratorSpec> specs;
   for (const auto& name : v) try {
-      parse_integrator_spec(name);
+      specs.push_back(parse_integrator_spec(name));
     } catch (const InputError& e) {
       s.fail(key, e.what());
     }
   check_unique(s, key, v);
+  // Two spellings of one integrator ("scmvv:5" and "scmvv:05") would run the same cells twice.
+  for (std::size_t i = 0; i < specs.size(); ++i)
+    for (std::size_t j = i + 1; j < specs.size(); ++j)
+      if (specs[i] == specs[j]) s.fail(key, "lists one integrator twice: " + v[i] + " and " + v[j]);
   return v;
 }
 

@@ -22,9 +22,9 @@ CellResult measure_cell(const Cell& cell, const StudyConfig& config, int threads
   // A blown-up run still has taps up to the blow-up; its tests would describe a broken trajectory, so the
   // cell keeps the observables up to that step and the reason, and skips the tests.
   if (out.status != CellStatus::ok) return out;
-  if (integrator_of(cell.integrator, config.scene).kind != dpd::Integrator::mvv) {
+  if (!integrator_of(cell.integrator, config.scene).tapped()) {
     if (config.tests.chi2_steps > 0 || config.tests.ttest_pairs > 0)
-      out.notes["tests"] = "not run: Shardlow's sweep draws its numbers outside the tapped pair loop";
+      out.notes["tests"] = "not run: " + cell.integrator + " draws no numbers in the tapped pair loop";
     return out;
   }
   record_chi2(run.taps, plan, config.tests, out);

@@ -17,8 +17,8 @@ TapPlan plan_taps(const Cell& cell, const StudyConfig& config, int words_per_pai
   const std::int64_t steps = s.steps_at(cell.dt), equilibrate = s.equilibrate_at(cell.dt);
   const std::int64_t production = steps - equilibrate;
   TapPlan plan;
-  // Shardlow's sweep is not tapped: its cells measure physics only.
-  if (integrator_of(cell.integrator, s).kind != dpd::Integrator::mvv) return plan;
+  // Shardlow's sweep is not tapped and pnhln draws no pair noise: their cells measure physics only.
+  if (!integrator_of(cell.integrator, s).tapped()) return plan;
   const std::int64_t m = std::min<std::int64_t>(t.chi2_steps, production);
   for (std::int64_t k = 0; k < m; ++k) plan.chi2_steps.push_back(equilibrate + 1 + k * production / m);
 
@@ -52,6 +52,8 @@ dpd::WaterConfig engine_config(const Cell& cell, const StudyConfig& config, int 
   const IntegratorSpec integrator = integrator_of(cell.integrator, s);
   w.integrator = integrator.kind;
   w.lambda = integrator.lambda;
+  w.scmvv_iterations = integrator.iterations;
+  w.pnhln_mu = integrator.mu;
   w.density = s.density;
   w.a = s.a;
   std::set<std::int64_t> raw(plan.chi2_steps.begin(), plan.chi2_steps.end());

@@ -214,7 +214,9 @@ fs::path write_stability_report(const StudyConfig& config, const std::vector<Cel
   md << detail::report_header(config, none, cells, "the stability report makes no generator verdicts")
      << detail::unreadable_cells_markdown(options.unreadable);
   md << "A *method* is an integrator (`mvv:λ`: Groot–Warren's modified velocity-Verlet; `shardlow`: Shardlow's S1 "
-        "splitting) with a generator and its noise. Every Δt runs "
+        "splitting; `scmvv:K`: the self-consistent velocity-Verlet with K dissipative-force iterations, K = 1 being "
+        "DPD-VV; `pnhln:μ`: the pairwise Nosé–Hoover–Langevin thermostat, which draws no pair noise and runs with "
+        "the MT19937 reference only) with a generator and its noise. Every Δt runs "
      << (s.time > 0 ? "the same simulated time, " + num(s.time) + " (of which " + num(s.equilibrate_time) +
                           " equilibrates), so steps = time / Δt"
                     : std::to_string(s.steps) + " steps")

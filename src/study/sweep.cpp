@@ -30,7 +30,18 @@ IntegratorSpec parse_integrator_spec(const std::string& text) {
       throw InputError("the lambda of " + quote_input(text) + " must lie in [0, 1] (Groot-Warren's MVV)");
     return {dpd::Integrator::mvv, lambda};
   }
-  throw InputError("unknown integrator " + quote_input(text) + " (known: mvv:<lambda>, e.g. mvv:0.65, and shardlow)");
+  if (text.rfind("scmvv:", 0) == 0 || text.rfind("pnhln:", 0) == 0) {
+    dpd::WaterConfig w;
+    dpd::set_integrator(w, text, "integrator " + quote_input(text));
+    IntegratorSpec spec;
+    spec.kind = w.integrator;
+    spec.iterations = w.scmvv_iterations;
+    spec.mu = w.pnhln_mu;
+    return spec;
+  }
+  throw InputError("unknown integrator " + quote_input(text) +
+                   " (known: mvv:<lambda>, e.g. mvv:0.65, shardlow, scmvv:<K>, e.g. scmvv:5, and pnhln:<mu>, e.g. "
+                   "pnhln:10)");
 }
 
 IntegratorSpec integrator_of(const std::string& name, const SceneParams& scene) {
@@ -73,9 +84,12 @@ std::vector<Cell> enumerate_cells(const StudyConfig& config) {
            std::find(t.nist_distributions.begin(), t.nist_distributions.end(), dist) != t.nist_distributions.end() &&
            replica < t.nist_replicas && (feed == rng::Feed::halves || feed == config.feeds.front());
   };
-  // Shardlow's sweep draws its numbers outside the pair loop's taps: its cells measure physics only.
-  const auto tapped = [&](const std::string& integ) {
-    return integrator_of(integ, config.scene).kind == dpd::Integrator::mvv;
+  // Shardlow's sweep draws its numbers outside the pair loop's taps and pnhln draws no pair noise: their cells
+  // measure physics only.
+  const auto tapped = [&](const std::string& integ) { return integrator_of(integ, config.scene).tapped(); };
+  // pnhln's result does not depend on the pair noise: it runs the first noise's reference cell only.
+  const auto reference_only = [&](const std::string& integ) {
+    return integrator_of(integ, config.scene).kind == dpd::Integrator::pnhln;
   };
   const std::vector<rng::Feed> halves_only{rng::Feed::halves};
   const std::vector<std::string> scene_integrator{""};
@@ -85,8 +99,11 @@ std::vector<Cell> enumerate_cells(const StudyConfig& config) {
         // A replica's seed sets the initial state (and the reference's stream); distinct per replica, shared
         // across generators.
         const std::uint64_t seed = rng::splitmix64_mix(config.seed * 0x9e3779b97f4a7c15ull + std::uint64_t(rep));
+        bool first_noise = true;
         for (const rng::Distribution dist : config.distributions)
           for (const rng::Feed feed : dist == rng::Distribution::gauss ? config.feeds : halves_only) {
+            if (reference_only(integ) && !first_noise) continue;
+            first_noise = false;
             // Each feed has its own reference: MT19937 under that feed (a control of the feed itself).
             Cell ref;
             ref.generator = config.reference;
@@ -100,6 +117,7 @@ std::vector<Cell> enumerate_cells(const StudyConfig& config) {
             ref.seed = seed;
             ref.nist = wants_nist(ref.generator, dist, feed, rep) && tapped(integ);
             cells.push_back(ref);
+            if (reference_only(integ)) continue;
             for (const auto& g : config.generators)
               for (const rng::Seeding seeding : g.seedings.empty() ? config.seedings : g.seedings)
                 for (int r : g.rounds) {

@@ -45,9 +45,31 @@ TEST(CliBenchDpd, ScalingTimesShardlow) {
   }
 }
 
+// A list of integrators times each one's step against GW-MVV's (mvv added when not listed), with Jdpd's
+// published factor beside the four schemes it ships and null for a K it does not report.
+TEST(CliBenchDpd, IntegratorsSideBySideAgainstMvv) {
+  const Result r = run("bench dpd --integrator shardlow,scmvv:1,scmvv:2,pnhln --pairs all --repeat 1 "
+                       "--steps-all 5 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["integrators"].size(), 5u);
+  EXPECT_EQ(j["integrators"][0]["integrator"], "mvv");
+  EXPECT_EQ(j["integrators"][0]["factor_vs_mvv"], 1.0);
+  for (const auto& c : j["integrators"]) {
+    EXPECT_GT(c["factor_vs_mvv"].get<double>(), 0.0) << c;
+    EXPECT_EQ(c["factor_vs_mvv"].get<double>(),
+              c["median_s"].get<double>() / j["integrators"][0]["median_s"].get<double>());
+  }
+  EXPECT_EQ(j["integrators"][2]["integrator"], "scmvv:1");
+  EXPECT_EQ(j["integrators"][2]["jdpd_factor"], 1.4);
+  EXPECT_TRUE(j["integrators"][3]["jdpd_factor"].is_null());  // scmvv:2
+  EXPECT_EQ(j["integrators"][4]["integrator"], "pnhln:10");
+}
+
 TEST(CliBenchDpd, RefusesBadArgumentsBeforeAnyRun) {
   for (const char* args : {"bench dpd --repeat 0", "bench dpd --scaling-only --no-scaling",
                            "bench dpd --integrator shardlow", "bench dpd --scaling-only --integrator verlet",
+                           "bench dpd --integrator mvv,scmvv:0", "bench dpd --integrator mvv,pnhln --scaling-only",
                            "bench dpd --generators tea32,nope", "bench dpd --rounds 0", "bench dpd --pairs some"}) {
     const Result r = run(args);
     EXPECT_EQ(r.code, 2) << args;

@@ -70,6 +70,14 @@ TEST(CliSimulate, BadWaterParametersExitTwoNamingTheParameter) {
       {kTiny + "--seed -1", "seed"},             {kTiny + "--init-seed -5", "init-seed"},
       {kTiny + "--sample-every 0", "--sample-every"}, {kTiny + "--key 1,2,3", "key"},
       {kTiny + "--integrator bogus", "integrator"},
+      {kTiny + "--integrator scmvv:0", "--integrator"},  {kTiny + "--integrator scmvv:101", "--integrator"},
+      {kTiny + "--integrator scmvv:x", "--integrator"},  {kTiny + "--integrator pnhln:0", "--integrator"},
+      {kTiny + "--integrator pnhln:nan", "--integrator"}, {kTiny + "--integrator mvv:0.5", "--integrator"},
+      {kTiny + "--integrator pnhln -g tea32", "--generator"},
+      {kTiny + "--integrator pnhln --seeding pair-step", "--seeding"},
+      {kTiny + "--integrator pnhln --rounds 2", "--rounds"},
+      {kTiny + "--integrator pnhln --distribution uniform", "--distribution"},
+      {kTiny + "--integrator pnhln --feed blocks", "--feed"},
       {kTiny + "--feed bogus", "feed"},          {kTiny + "--distribution uniform --feed blocks", "feed"},
       {kTiny + "--distribution uniform --feed inverse", "feed"},
       {"simulate -q --particles 1", "particles"}, {"simulate -q -n 8", "particles/density"},
@@ -95,6 +103,8 @@ TEST(CliSimulate, BadBilayerParametersExitTwoNamingTheParameter) {
       {kTinyBilayer + "--density 3", "density"},  {kTinyBilayer + "--a 25", "--a"},
       {kTinyBilayer + "--particles 100", "particles"}, {kTinyBilayer + "--rc 1", "rc"},
       {kTinyBilayer + "--integrator shardlow", "integrator"},
+      {kTinyBilayer + "--integrator scmvv:5", "integrator"},
+      {kTinyBilayer + "--integrator pnhln", "integrator"},
       {kTinyBilayer + "--distribution uniform --feed blocks", "feed"},
       {"simulate --scene bilayer -q --steps -1 --equilibrate 0", "steps"},
       {"simulate --scene bilayer -q --steps 20 --equilibrate 20", "equilibrate"},
@@ -215,6 +225,25 @@ TEST(CliSimulate, ShardlowIntegratorIsChosenAndReported) {
   EXPECT_NEAR(j.at("pressure_mean").get<double>(), j.at("pressure_conservative_mean").get<double>(), 1e-9);
   const Result human = run(kTiny + "--integrator shardlow");
   EXPECT_NE(human.out.find(", integrator shardlow"), std::string::npos) << human.out;
+}
+
+// scmvv and pnhln are spelt name[:parameter]; the JSON and the human line name the parameter. pnhln draws no
+// pair noise: its record names the reference, and -g mt19937 (the reference itself) is accepted.
+TEST(CliSimulate, ScmvvAndPnhlnAreChosenAndReported) {
+  const json sc = run_json(kTiny + "--integrator scmvv:5");
+  EXPECT_EQ(sc.at("status"), "ok");
+  EXPECT_EQ(sc.at("integrator"), "scmvv:5");
+  EXPECT_EQ(sc.at("generator"), "tea32(32)");  // the default pair noise
+  EXPECT_GT(sc.at("zeta").at("n").get<std::uint64_t>(), 1000u);  // the pair noise, as mvv draws it
+  EXPECT_EQ(run_json(kTiny + "--integrator scmvv").at("integrator"), "scmvv:1");
+  const json nh = run_json(kTiny + "--integrator pnhln:2.5 -g mt19937");
+  EXPECT_EQ(nh.at("status"), "ok");
+  EXPECT_EQ(nh.at("integrator"), "pnhln:2.5");
+  EXPECT_EQ(nh.at("generator"), "mt19937");
+  EXPECT_EQ(nh.at("zeta").at("n"), 0u);
+  EXPECT_NEAR(nh.at("pressure_mean").get<double>(), nh.at("pressure_conservative_mean").get<double>(), 1e-9);
+  const Result human = run(kTiny + "--integrator pnhln");
+  EXPECT_NE(human.out.find(", integrator pnhln:10"), std::string::npos) << human.out;
 }
 
 TEST(CliSimulate, HumanOutputNamesTheObservables) {

@@ -183,13 +183,18 @@ Snapshot run_snapshot(WaterConfig cfg) {
 }
 }  // namespace
 
-// Bitwise-identical trajectories for 1 and 2 threads, for a hash and for the mt19937 stream, both pair modes.
+// Bitwise-identical trajectories for 1 and 2 threads, for a hash and for the mt19937 stream, both pair modes,
+// under GW-MVV, the self-consistent VV (its dissipative passes) and the pairwise Nosé–Hoover–Langevin thermostat
+// (its coloured friction sweeps).
 TEST(Determinism, OneAndTwoThreadsGiveTheSameBits) {
+  for (const char* integrator : {"mvv", "scmvv:3", "pnhln"})
   for (const char* gen : {"tea32", "mt19937"})
     for (PairMode mode : {PairMode::all, PairMode::cells}) {
       WaterConfig cfg;
+      set_integrator(cfg, integrator, "integrator");
       cfg.particles = 500;
-      cfg.steps = test_scale::scaled(100, 30);
+      // The other integrators' steps hold several pair passes each, with a barrier per colour of their sweeps.
+      cfg.steps = cfg.integrator == Integrator::mvv ? test_scale::scaled(100, 30) : test_scale::scaled(30, 15);
       cfg.equilibrate = 0;
       cfg.pairs = mode;
       cfg.generator = rng::validated({gen, 0});
@@ -202,9 +207,9 @@ TEST(Determinism, OneAndTwoThreadsGiveTheSameBits) {
       ASSERT_EQ(a.x.size(), 1500u);
       for (std::size_t k = 0; k < a.x.size(); ++k)
         ASSERT_EQ(std::bit_cast<std::uint64_t>(a.x[k]), std::bit_cast<std::uint64_t>(b.x[k]))
-            << gen << " " << to_string(mode) << " coordinate " << k;
+            << integrator << " " << gen << " " << to_string(mode) << " coordinate " << k;
       for (std::size_t k = 0; k < a.v.size(); ++k)
-        ASSERT_EQ(std::bit_cast<std::uint64_t>(a.v[k]), std::bit_cast<std::uint64_t>(b.v[k]));
+        ASSERT_EQ(std::bit_cast<std::uint64_t>(a.v[k]), std::bit_cast<std::uint64_t>(b.v[k])) << integrator;
     }
 }
 
@@ -252,9 +257,13 @@ TEST(Determinism, DefectGeneratorOneAndTwoThreads) {
 // step about Δt·ε·Σ|F| ≈ 0.04 · 1e-16 · (N·40) ≈ 1e-13 for N = 256, a random walk over the run. 1e-11 per
 // bead after 500 steps is a loose bound on round-off and far below any real leak (one unpaired force would
 // move it by ~Δt·|F|/N ≈ 1e-3 in one step).
+// The same holds under the self-consistent VV (its dissipative passes are pair forces too) and the pairwise
+// Nosé–Hoover–Langevin thermostat (each pair's friction update moves its two beads by opposite amounts).
 TEST(Momentum, ConservedToRoundOff) {
+  for (const char* integrator : {"mvv", "scmvv:5", "pnhln"})
   for (PairMode mode : {PairMode::all, PairMode::cells}) {
     WaterConfig cfg;
+    set_integrator(cfg, integrator, "integrator");
     cfg.steps = test_scale::scaled(500, 100);
     cfg.equilibrate = 0;
     cfg.pairs = mode;
@@ -263,7 +272,7 @@ TEST(Momentum, ConservedToRoundOff) {
     cfg.threads = 1;
     const RunResult r = run_water(cfg);
     ASSERT_TRUE(r.ok()) << r.status;
-    EXPECT_LT(r.momentum_drift, 1e-11) << to_string(mode);
+    EXPECT_LT(r.momentum_drift, 1e-11) << integrator << " " << to_string(mode);
   }
 }
 

@@ -81,6 +81,43 @@ TEST(StudyIntegrators, BadIntegratorsNameTheKey) {
             std::string::npos);
 }
 
+// scmvv:K and pnhln:μ are spelt like mvv:λ and reach the engine; scmvv draws its pair noise in the tapped pair
+// loop (its cells keep the tests), pnhln draws none: it runs the reference cell alone, untapped.
+TEST(StudyIntegrators, ScmvvAndPnhlnReachTheEngine) {
+  const StudyConfig c = parse_config(
+      with(kConfig, "[[sweep.generator]]", "integrators = [\"scmvv:5\", \"pnhln:2.5\"]\n[[sweep.generator]]"),
+      "cfg.toml");
+  const auto cells = enumerate_cells(c);
+  ASSERT_EQ(cells.size(), 2u * 2u + 2u * 1u);  // scmvv: MT and tea32, pnhln: MT only; 2 replicas
+  for (const auto& cell : cells) {
+    const dpd::WaterConfig w = engine_config(cell, c, 1, TapPlan{});
+    if (cell.integrator == "scmvv:5") {
+      EXPECT_EQ(w.integrator, dpd::Integrator::scmvv);
+      EXPECT_EQ(w.scmvv_iterations, 5);
+      EXPECT_FALSE(plan_taps(cell, c, 1).pairs.empty()) << cell.id();
+    } else {
+      EXPECT_EQ(w.integrator, dpd::Integrator::pnhln);
+      EXPECT_EQ(w.pnhln_mu, 2.5);
+      EXPECT_TRUE(cell.reference) << cell.id();
+      EXPECT_FALSE(cell.nist);
+      EXPECT_TRUE(plan_taps(cell, c, 1).pairs.empty());
+    }
+  }
+  EXPECT_EQ(cells[0].id(), "mt19937-gauss-dt0.04-scmvv5-rep00");
+  EXPECT_NO_THROW(validate_scene(c));
+}
+
+TEST(StudyIntegrators, BadScmvvAndPnhlnNameTheKey) {
+  for (const char* bad : {"\"scmvv\"", "\"scmvv:0\"", "\"scmvv:101\"", "\"scmvv:x\"", "\"scmvv:1.5\"",
+                          "\"pnhln\"", "\"pnhln:0\"", "\"pnhln:-1\"", "\"pnhln:nan\"",
+                          "\"scmvv:5\", \"scmvv:05\"", "\"pnhln:10\", \"pnhln:1e1\"",
+                          "\"mvv:0.5\", \"mvv:0.50\""}) {
+    const std::string e =
+        error_of(with(kConfig, "[[sweep.generator]]", std::string("integrators = [") + bad + "]\n[[sweep.generator]]"));
+    EXPECT_NE(e.find("sweep.integrators"), std::string::npos) << bad << ": " << e;
+  }
+}
+
 // The record carries the integrator when the sweep names one, and only then (the records of a study without the
 // factor lack the attribute).
 TEST(StudyIntegrators, CellRecordsCarryTheIntegrator) {

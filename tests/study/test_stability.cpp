@@ -165,11 +165,15 @@ TEST(StabilityCli, CiStudyReportsEveryCell) {
     EXPECT_NE(md.find(section), std::string::npos) << section;
   EXPECT_NE(md.find("| mvv:0.5 tea32(1) gauss | 0.5 | 0/2 | blown up: step "), std::string::npos) << md;
   // The swept integrators, not the scene's unused λ, and no claim of error control over zero tests.
-  EXPECT_NE(md.find("integrators swept: mvv:0.5, shardlow"), std::string::npos) << md.substr(0, 1200);
+  EXPECT_NE(md.find("integrators swept: mvv:0.5, shardlow, scmvv:5, pnhln:10"), std::string::npos)
+      << md.substr(0, 1200);
   EXPECT_EQ(md.find("λ = 0.5,"), std::string::npos) << md.substr(0, 1200);
   EXPECT_NE(md.find("Error control: none needed (no tests, no verdicts)"), std::string::npos);
   const StabilityAnalysis a = analyse_stability(c, cells);
-  EXPECT_EQ(a.points.size(), 2u * 2u * 4u);
+  // mvv, shardlow and scmvv with MT19937 and 32TEA(1), pnhln with MT19937 only, each at 4 Δt.
+  EXPECT_EQ(a.points.size(), (3u * 2u + 1u) * 4u);
+  for (const auto& p : a.points)
+    if (p.integrator == "pnhln:10") EXPECT_EQ(p.generator, "mt19937") << p.method();
   const std::string csv = read(out / "report" / "stability.csv");
   for (const auto& p : a.points) {
     EXPECT_NE(csv.find(p.method() + "," + p.integrator), std::string::npos) << p.method();

@@ -19,11 +19,16 @@ enum class PairMode { all, cells };
 PairMode parse_pair_mode(std::string_view name);  // throws InputError
 std::string_view to_string(PairMode m);
 
-// mvv: Groot–Warren modified velocity-Verlet (λ). shardlow: Shardlow's S1 splitting (shardlow.hpp; λ unused),
-// water scene only.
-enum class Integrator { mvv, shardlow };
-Integrator parse_integrator(std::string_view name);  // throws InputError
+// mvv: Groot–Warren modified velocity-Verlet (λ). shardlow: Shardlow's S1 splitting (shardlow.hpp; λ unused).
+// scmvv: the self-consistent velocity-Verlet with K dissipative-force iterations a step (self_consistent.hpp; K = 1
+// is DPD-VV). pnhln: the pairwise Nosé–Hoover–Langevin thermostat with coupling μ (pnhl.hpp; no pair noise, its
+// thermostat variable's noise from the mt19937 stream). Water scene only.
+enum class Integrator { mvv, shardlow, scmvv, pnhln };
+Integrator parse_integrator(std::string_view name);  // a bare name; throws InputError
 std::string_view to_string(Integrator i);
+inline constexpr int kScmvvIterations = 1;        // scmvv's default K: DPD-VV
+inline constexpr int kScmvvMaxIterations = 100;
+inline constexpr double kPnhlnMu = 10.0;          // pnhln's default coupling μ
 
 // Noise replacements that keep every other cost of a step; only the benchmark uses them, to measure the RNG's
 // share by difference. none: ζ = 0 without a generator call. unhashed: the seed words pass through unhashed
@@ -46,6 +51,11 @@ void check_step_resolves(double dt, double kT, double box_length, const std::str
 // The box may be at most 2^24 cut-offs wide: wider, the coordinates' rounding approaches the scale of a pair.
 void check_box_resolves(double box_length, double rc, const std::string& field);
 
+struct WaterConfig;
+// "mvv", "shardlow", "scmvv[:K]" (K whole, 1..100) or "pnhln[:μ]" (μ > 0) into cfg's integrator and parameter;
+// InputError naming `what` (e.g. "--integrator") otherwise.
+void set_integrator(WaterConfig& cfg, std::string_view text, const std::string& what);
+
 struct WaterConfig {
   // System
   int particles = 256;
@@ -58,6 +68,8 @@ struct WaterConfig {
   double lambda = 0.5;
   double dt = 0.04;
   Integrator integrator = Integrator::mvv;
+  int scmvv_iterations = kScmvvIterations;  // K of scmvv
+  double pnhln_mu = kPnhlnMu;               // μ of pnhln
   std::int64_t steps = 10000;
   std::int64_t equilibrate = 500;
   // Pair search
@@ -88,6 +100,8 @@ struct WaterConfig {
   TapConfig taps;
   NoiseOverride noise_override = NoiseOverride::off;
 
+  // "mvv", "shardlow", "scmvv:K", "pnhln:μ" (the parameter from scmvv_iterations, pnhln_mu).
+  std::string integrator_name() const;
   double box_length() const;
   void validate() const;  // throws InputError naming the field
 };

@@ -13,13 +13,21 @@
 
 namespace dpdrng::study {
 
-// One integrator of the sweep ([sweep] integrators): Groot–Warren MVV with its λ ("mvv:0.65") or Shardlow's S1
-// splitting ("shardlow", λ unused). Cells of a study that sweeps none carry the empty name: MVV at the scene's λ.
+// One integrator of the sweep ([sweep] integrators): Groot–Warren MVV with its λ ("mvv:0.65"), Shardlow's S1
+// splitting ("shardlow", λ unused), the self-consistent velocity-Verlet with K iterations ("scmvv:5") or the
+// pairwise Nosé–Hoover–Langevin thermostat with coupling μ ("pnhln:10"). Cells of a study that sweeps none carry
+// the empty name: MVV at the scene's λ.
 struct IntegratorSpec {
   dpd::Integrator kind = dpd::Integrator::mvv;
   double lambda = 0.5;
+  int iterations = dpd::kScmvvIterations;
+  double mu = dpd::kPnhlnMu;
+  bool operator==(const IntegratorSpec&) const = default;
+  // mvv and scmvv draw their pair noise in the pair loop, whose numbers the tests tap; shardlow draws in its own
+  // sweep and pnhln draws no pair noise.
+  bool tapped() const { return kind == dpd::Integrator::mvv || kind == dpd::Integrator::scmvv; }
 };
-// InputError unless "mvv:<λ in [0, 1]>" or "shardlow".
+// InputError unless "mvv:<λ in [0, 1]>", "shardlow", "scmvv:<K in 1..100>" or "pnhln:<μ > 0>".
 IntegratorSpec parse_integrator_spec(const std::string& text);
 // The spec a cell runs: the named one, or MVV at the scene's λ for the empty name.
 IntegratorSpec integrator_of(const std::string& name, const SceneParams& scene);
