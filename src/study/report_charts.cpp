@@ -223,7 +223,7 @@ std::vector<std::string> write_charts(const Analysis& a, const std::vector<CellR
     pass.extra += hline(1 - a.alpha, "1 − α", "gray30") + "set yrange [*:1.005]\n";
     temp.auto_logy = true;
     speed.extra += hline(-std::log10(a.alpha), "α (" + detail::num(a.alpha) + ")", "red", 0.9);
-    Line ok{"indistinguishable from MT", "using 1:2:3 with labels point pt 7 ps 1.2 lc rgb 'dark-green' offset 0.8,0.6 left",
+    Line ok{"does not differ from MT", "using 1:2:3 with labels point pt 7 ps 1.2 lc rgb 'dark-green' offset 0.8,0.6 left",
             {}, {}};
     Line bad{"differs from MT", "using 1:2:3 with labels point pt 5 ps 1.2 lc rgb 'red' offset 0.8,0.6 left", {}, {}};
     for (const auto& [fam, vs] : fams) {
