@@ -53,15 +53,27 @@ std::vector<VerdictRow> verdict_rows(const Analysis& a) {
   return out;
 }
 
-// The observables with a margin that some variant holds, in table order.
-std::vector<std::string> margin_observables(const Analysis& a) {
-  std::vector<std::string> names;
-  for (const auto& d : margin_defaults())
+// Every observable with a margin, in table order: its name and margin in force.
+std::vector<std::pair<std::string, double>> all_margins(const Analysis& a) {
+  std::vector<std::pair<std::string, double>> out;
+  const auto in_force = [&](const char* key, double fallback) {
+    const auto it = a.margins.find(key);
+    return it == a.margins.end() ? fallback : it->second;
+  };
+  for (const auto& s : scalar_observables()) out.push_back({s.name, in_force(s.margin_key, s.margin)});
+  for (const auto& c : curve_observables()) out.push_back({c.name, in_force(c.margin_key, c.margin)});
+  return out;
+}
+
+// The observables with a margin that some variant holds, in table order, with the margin.
+std::vector<std::pair<std::string, double>> margin_observables(const Analysis& a) {
+  std::vector<std::pair<std::string, double>> names;
+  for (const auto& m : all_margins(a)) {
+    bool held = false;
     for (const auto& v : a.variants)
-      for (const auto& c : v.observables)
-        if (c.observable == d.observable && std::isfinite(c.margin) &&
-            std::find(names.begin(), names.end(), d.observable) == names.end())
-          names.push_back(d.observable);
+      for (const auto& c : v.observables) held = held || (c.observable == m.first && std::isfinite(c.margin));
+    if (held) names.push_back(m);
+  }
   return names;
 }
 
@@ -99,12 +111,8 @@ std::string verdict_table_markdown(const Analysis& a) {
   const auto names = margin_observables(a);
   std::ostringstream o;
   o << "| variant | noise | seeding | replicas | verdict |";
-  for (const auto& n : names) {
-    double margin = NAN;
-    for (const auto& d : margin_defaults())
-      if (d.observable == n) margin = a.margins.count(d.key) ? a.margins.at(d.key) : d.margin;
+  for (const auto& [n, margin] : names)
     o << ' ' << observable_label(n) << " shift % [95 % CI] (δ = " << fmt("%g", 100 * margin) << " %) |";
-  }
   o << " tests without a margin that differ |\n|---|---|---|---|---|";
   for (std::size_t k = 0; k < names.size(); ++k) o << "---|";
   o << "---|\n";
@@ -113,7 +121,7 @@ std::string verdict_table_markdown(const Analysis& a) {
     if (v.key.reference) continue;
     o << "| " << v.key.label() << " | " << v.key.noise() << " | " << v.key.seeding_name() << " | " << v.cells.size()
       << " | " << (v.outcome == Outcome::differs ? "**" + v.verdict + "**" : v.verdict) << " |";
-    for (const auto& n : names) {
+    for (const auto& [n, margin] : names) {
       const Comparison* c = nullptr;
       for (const auto& x : v.observables)
         if (x.observable == n) c = &x;
@@ -153,10 +161,11 @@ std::string score_check_markdown(const Analysis& a) {
 std::string how_to_read_verdicts(const StudyConfig& config, const Analysis& a) {
   std::ostringstream o;
   o << "**How to read a verdict.** A verdict compares one variant with " << config.reference
-    << " run with the same scene, seeding of the initial states, distribution and feed of the noise, integrator and "
-       "Δt, over "
+    << " under the same assumptions: the variant's pair seeding of the noise (distance: the separation's bits; "
+       "pair-step: pair ids and step), its distribution (gauss, uniform) and, for the Gaussian, its feed "
+       "(halves, blocks, inverse), the same integrator and Δt, the same scene and initial states, "
     << config.replicas
-    << " replicas each, and holds for those settings only. *Equivalent*: for every observable with a margin δ, the "
+    << " replicas each; it holds for those settings only. *Equivalent*: for every observable with a margin δ, the "
        "shift's (1 − 2α′) confidence interval lies inside ±δ (two one-sided tests, α′ Holm's threshold over the "
        "study's equivalence tests), and no test differs. *Differs*: some test rejects equality after the error "
        "control below. *Inconclusive*: neither — the replicas cannot tell a shift smaller than δ from one larger. "

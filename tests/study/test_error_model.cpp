@@ -67,7 +67,7 @@ TEST(StudyErrorModel, NullStudyScoresAreNotOverDispersed) {
         if (o.test == std::string("t")) chosen[o.observable].push_back(o.score), runs[o.observable].push_back(o.score_runs);
     }
   }
-  ASSERT_EQ(chosen.size(), 4u);  // T, its fluctuation, P, D
+  ASSERT_EQ(chosen.size(), 7u);  // T, its fluctuation, P, P_xx, P_yy, P_zz, D
   for (const auto& [name, z] : chosen) {
     const auto d = dpdrng::stats::score_dispersion(z, 0.99), r = dpdrng::stats::score_dispersion(runs[name], 0.99);
     std::printf("%s: replicas' spread %.2f [%.2f, %.2f], runs' block errors %.2f [%.2f, %.2f], 99 %% CI over %zu\n",

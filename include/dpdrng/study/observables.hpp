@@ -41,11 +41,12 @@ const std::vector<CurveSpec>& curve_observables();
 // The membrane scene's curves (density profiles): compared like the water's, without a margin of their own.
 const std::vector<CurveSpec>& bilayer_curves();
 
-// Every margin key with its default, in table order: what [tests.margins] accepts.
+// Every margin key with its default, in table order: what [tests.margins] accepts. Observables may share a key
+// (the pressure tensor's components); the first sets the default.
 struct MarginDefault {
   std::string key;
   double margin;
-  std::string observable;  // the observable it applies to
+  std::string observable;  // the first observable it applies to
 };
 std::vector<MarginDefault> margin_defaults();
 
