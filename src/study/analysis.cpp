@@ -144,8 +144,7 @@ void set_verdict(VariantReport& v, const std::vector<Tested>& tests) {
   for (const auto& o : v.observables) {
     if (o.outcome == Outcome::none) continue;
     if (std::isfinite(o.margin)) ++margins, equivalent += o.outcome == Outcome::equivalent;
-    if (o.outcome == Outcome::differs && (!differing || o.decision.p_adjusted < differing->decision.p_adjusted))
-      differing = &o;
+    if (o.outcome == Outcome::differs && !differing) differing = &o;  // the first in table order: T before curves
   }
   if (best && best->decision->differs) {
     v.outcome = Outcome::differs;
@@ -158,8 +157,9 @@ void set_verdict(VariantReport& v, const std::vector<Tested>& tests) {
     return;
   } else {
     v.outcome = Outcome::inconclusive;
-    v.verdict = "inconclusive (" + std::to_string(equivalent) + " of " + std::to_string(margins) +
-                " observables shown equivalent)";
+    v.verdict = margins == 0 ? "inconclusive (no observable has a margin: none can be shown equivalent)"
+                             : "inconclusive (" + std::to_string(equivalent) + " of " + std::to_string(margins) +
+                                   " observables shown equivalent)";
   }
   if (!v.broken.empty()) v.verdict += " [" + std::to_string(v.broken.size()) + " replica(s) unstable/failed]";
 }
@@ -336,6 +336,13 @@ const VariantReport* Analysis::reference_for(const VariantKey& k) const {
   return nullptr;
 }
 
+std::string Analysis::equivalence_text() const {
+  if (equivalence_tests == 0) return "no observable has a margin, so there are no equivalence tests.";
+  return "the " + std::to_string(equivalence_tests) +
+         " equivalence tests are Holm-corrected together over the whole study, so the chance of any false "
+         "\"equivalent\" is at most α as well.";
+}
+
 std::string Analysis::error_control_sentence() const {
   char buf[900];
   if (error_control == ErrorControl::study)
@@ -343,17 +350,15 @@ std::string Analysis::error_control_sentence() const {
                   "Error control: one family per study. Every two-sided test of every variant (observables, "
                   "⟨ζ²⟩ = 1, isotropy where the cells hold components, pass fractions and ζ correlations, %zu "
                   "tests) is Holm-corrected together, so the chance that a study of generators as good as the "
-                  "reference shows any \"differs\" is at most α = %g; the %zu equivalence tests are "
-                  "Holm-corrected together, so the chance of any false \"equivalent\" is at most α as well.",
-                  family_size, alpha, equivalence_tests);
+                  "reference shows any \"differs\" is at most α = %g; %s",
+                  family_size, alpha, equivalence_text().c_str());
   else
     std::snprintf(buf, sizeof buf,
                   "Error control: the family-wise error rate is held at α = %g within each variant (Holm's "
                   "procedure over each variant's own tests, ⟨ζ²⟩ = 1 included; %zu tests in %zu families): each "
                   "verdict errs with probability at most α, so a study of %zu variants as good as the reference can "
-                  "show up to %zu × α false \"differs\" on average. The %zu equivalence tests are Holm-corrected "
-                  "over the whole study.",
-                  alpha, family_size, families, families, families, equivalence_tests);
+                  "show up to %zu × α false \"differs\" on average; %s",
+                  alpha, family_size, families, families, families, equivalence_text().c_str());
   return buf;
 }
 

@@ -135,7 +135,8 @@ fs::path write_bilayer_report(const StudyConfig& config, const std::vector<CellR
         "the density profiles). The membrane's observables have no equivalence margins, so a generator that does "
         "not differ is *inconclusive*: nothing shows it equivalent. *Smallest corrected p*: the smallest "
         "P-value after that correction, below α exactly when the verdict says *differs*. Bilayer cells tap no raw "
-        "numbers: the generators' χ², lag-1 t and NIST results are the water study's.\n\n"
+        "numbers: the generators' χ², lag-1 t and NIST results are the water study's.\n\n- "
+     << a.error_model_sentence() << "\n\n"
      << summary_markdown(a) << "\n";
 
   md << "## Membrane observables per generator\n\n"
