@@ -345,7 +345,8 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
 
   md << detail::broken_cells_markdown(cells);
   md << "\n## Files\n\n"
-     << "`summary.csv`, `pass_table.csv`, `observables.csv`, `zeta.csv`, `cells.csv` (every scalar of every cell)";
+     << "`verdicts.csv` (one row per variant × observable or test, and per variant), `summary.csv`, "
+        "`pass_table.csv`, `observables.csv`, `zeta.csv`, `cells.csv` (every scalar of every cell)";
   for (const auto& f : nist_files) md << ", `" << f << "`";
   md << "; charts in `charts/` (SVG, PNG and the gnuplot script of each); all data in `../study.h5` (h5py: "
         "`h5py.File('study.h5')['cells']`).\n";

@@ -119,6 +119,7 @@ fs::path write_bilayer_report(const StudyConfig& config, const std::vector<CellR
   detail::write_text(dir / "summary.csv", summary_csv(a));
   detail::write_text(dir / "bilayer_table.csv", bilayer_table_csv(a));
   detail::write_text(dir / "bilayer_differences.csv", bilayer_differences_csv(a));
+  detail::write_text(dir / "verdicts.csv", verdicts_csv(a));
   detail::write_text(dir / "cells.csv", detail::cells_csv(cells));
   std::vector<std::string> made;
   if (options.charts) made = write_bilayer_charts(a, dir / "charts", options.log);
@@ -185,7 +186,8 @@ fs::path write_bilayer_report(const StudyConfig& config, const std::vector<CellR
 
   md << detail::broken_cells_markdown(cells);
   md << "\n## Files\n\n"
-     << "`summary.csv`, `bilayer_table.csv` (means and CIs), `bilayer_differences.csv` (differences and their tests), "
+     << "`summary.csv`, `verdicts.csv` (one row per generator × observable and per generator), "
+        "`bilayer_table.csv` (means and CIs), `bilayer_differences.csv` (differences and their tests), "
         "`cells.csv` (every scalar of every cell); charts in `charts/` (SVG, PNG and the gnuplot script of "
         "each); all data in `../study.h5` (each cell's profile/z, profile/head, profile/tail, profile/water).\n";
   detail::write_text(dir / "report.md", md.str());

@@ -64,7 +64,8 @@ TEST(StudyErrorModel, NullStudyScoresAreNotOverDispersed) {
       EXPECT_NE(v.outcome, Outcome::differs) << seed << " " << v.key.label() << " " << v.verdict;
       if (!known_good(v.key)) continue;
       for (const auto& o : v.observables)
-        if (o.test == std::string("t")) chosen[o.observable].push_back(o.score), runs[o.observable].push_back(o.score_runs);
+        if (o.test == std::string("t"))
+          chosen[o.observable].push_back(o.score), runs[o.observable].push_back(o.score_runs);
     }
   }
   ASSERT_EQ(chosen.size(), 7u);  // T, its fluctuation, P, P_xx, P_yy, P_zz, D
