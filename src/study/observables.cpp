@@ -3,7 +3,7 @@
 namespace dpdrng::study {
 
 // Margins: the temperature and pressure to half a percent (a thermostat's error a DPD user notices; the paper's
-// worst generators shift T by several percent), diffusion to 3 % (its run-to-run spread is ten times T's),
+// worst generators shift T by several percent), diffusion to 3 % (its run-to-run spread is over ten times T's),
 // T's fluctuation to 2 %, each diagonal component of the pressure tensor to 0.5 % (isotropy: a noise whose
 // variance depends on the pair's direction shifts them apart). Curves bin by bin: the velocity PDF to 5 % in
 // every bin above 1 % of its peak (the tails' counting noise), g(r) to 2 % outside the core, the MSD to 3 % (as D).

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <regex>
 
 #include "dpdrng/stats/mean_tests.hpp"
 #include "dpdrng/stats/multiple.hpp"
@@ -333,6 +334,20 @@ TEST(StudyAnalysis, MissingReferenceGivesNoVerdict) {
     EXPECT_EQ(count(pass_table_markdown(a, "gauss"), "**"), 0u);
     EXPECT_EQ(count(summary_markdown(a), "differs"), 0u);
   }
+}
+
+// A shift of 30 % against a spread of 0.08 % has a P-value far below 1e-12, which no error model of the study
+// supports: every table prints "< 1e-12", none a smaller number or 0.
+TEST(StudyReport, PValuesArePrintedNoSmallerThanTheFloor) {
+  const StudyConfig cfg = parse_config(kConfig, "c.toml");
+  const Analysis a = analyse(cfg, fake_cells(cfg, 0.3));
+  ASSERT_LT(comparison(find(a, "tea32", 1), "temperature_mean").decision.p_adjusted, 1e-12);
+  const std::regex smaller("e-(1[3-9]|[2-9][0-9]|[1-9][0-9][0-9])|p 0\\)| 0 \\|");
+  for (const std::string& table : {observables_markdown(a, "gauss"), summary_markdown(a), zeta_markdown(a)}) {
+    EXPECT_FALSE(std::regex_search(table, smaller)) << table;
+  }
+  EXPECT_NE(observables_markdown(a, "gauss").find("(p < 1e-12)"), std::string::npos);
+  EXPECT_NE(summary_markdown(a).find("| < 1e-12 |"), std::string::npos);
 }
 
 TEST(StudyReport, NistLayoutFollowsTheReference) {
