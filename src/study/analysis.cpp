@@ -9,30 +9,13 @@
 #include "dpdrng/stats/mean_tests.hpp"
 #include "dpdrng/stats/multiple.hpp"
 #include "dpdrng/stats/nist/battery.hpp"
+#include "dpdrng/study/observables.hpp"
 #include "dpdrng/stats/summary.hpp"
 
 namespace dpdrng::study {
 namespace {
 
-using detail::CurveSpec;
-using detail::ScalarSpec;
 using detail::values_of;
-
-// What the paper compares (T, the velocity PDF against Maxwell–Boltzmann, D) plus pressure and T's fluctuation.
-constexpr ScalarSpec kScalars[] = {{"temperature_mean", "temperature_sem", false},
-                                   {"temperature_std", "temperature_std_sem", false},
-                                   {"pressure_mean", "pressure_sem", false},
-                                   {"diffusion_coefficient", "diffusion_sem", false},
-                                   {"vpdf_error_mb", "vpdf_error_mb_sem", true}};
-// The velocity PDF's tails (below 1 % of its peak) and g(r) inside the core (below 0.1) are counting noise.
-constexpr CurveSpec kCurves[] = {{"vpdf_vs_mt", "vpdf/p", "vpdf/jackknife", 0.01, true, 0.5},
-                                 {"rdf_vs_mt", "rdf/g", "rdf/jackknife", 0.1, false, 0.5},
-                                 {"msd_vs_mt", "msd/msd", "msd/jackknife", 0.0, false, 1.0}};
-// The membrane's structure as curves: bins where the density is below a tenth of its peak (the empty core for
-// water, the bulk water for tails) are left out.
-constexpr CurveSpec kBilayerCurves[] = {{"head_profile_vs_mt", "profile/head", nullptr, 0.1, true, 0.5},
-                                        {"tail_profile_vs_mt", "profile/tail", nullptr, 0.1, true, 0.5},
-                                        {"water_profile_vs_mt", "profile/water", nullptr, 0.1, true, 0.5}};
 
 struct Tested {
   Decision* decision;
@@ -49,7 +32,30 @@ std::vector<Tested> tests_of(VariantReport& v) {
   for (auto& c : v.correlations)
     if (c.available && c.decision.tested())
       t.push_back({&c.decision, c.what == "pair" ? "ζ correlation across pairs" : "ζ correlation across steps"});
+  if (v.zeta_decision.tested()) t.push_back({&v.zeta_decision, "⟨ζ²⟩ = 1"});
   return t;
+}
+
+// The equivalence tests of every variant with a verdict, Holm-corrected together: a false "equivalent" is the
+// error a user pays for, so the study's family-wise rate of it is held at α.
+std::size_t decide_equivalence(std::vector<VariantReport>& variants, const std::vector<bool>& judged, double alpha) {
+  std::vector<Equivalence*> family;
+  for (std::size_t k = 0; k < variants.size(); ++k)
+    if (judged[k])
+      for (auto& o : variants[k].observables)
+        if (o.available && o.equivalence.tested()) family.push_back(&o.equivalence);
+  std::vector<double> p;
+  for (const auto* e : family) p.push_back(e->p);
+  const auto adjusted = stats::holm_adjust(p);
+  for (std::size_t k = 0; k < family.size(); ++k)
+    family[k]->p_adjusted = adjusted[k], family[k]->equivalent = adjusted[k] < alpha;
+  return family.size();
+}
+
+Outcome outcome_of(const Comparison& c) {
+  if (!c.available) return Outcome::none;
+  if (c.decision.differs) return Outcome::differs;
+  return c.equivalence.equivalent ? Outcome::equivalent : Outcome::inconclusive;
 }
 
 void holm(std::vector<Tested>& family, double alpha) {
@@ -75,16 +81,45 @@ std::string missing_reference(const VariantReport* ref, int replicas, const std:
          std::to_string(replicas) + " replicas missing, unreadable or failed)";
 }
 
-void compare(VariantReport& v, const VariantReport& ref, bool bilayer) {
-  if (bilayer) {
-    for (const auto& o : bilayer_observables()) v.observables.push_back(detail::compare_paired(o.name, v, ref));
-    for (const auto& c : kBilayerCurves) v.observables.push_back(detail::compare_curve(c, v, ref));
-    return;
-  }
-  for (const auto& s : kScalars) v.observables.push_back(detail::compare_scalar(s, v, ref));
-  for (const auto& c : kCurves) v.observables.push_back(detail::compare_curve(c, v, ref));
+double margin_of(const std::map<std::string, double>& margins, const std::string& key, double fallback) {
+  const auto it = margins.find(key);
+  return it == margins.end() ? fallback : it->second;
 }
 
+// Observables the cells do not store are left out (not a verdict's member).
+void compare(VariantReport& v, const VariantReport& ref, bool bilayer, const std::map<std::string, double>& margins) {
+  const auto keep = [&](Comparison c) {
+    if (c.note != "not measured") v.observables.push_back(std::move(c));
+  };
+  if (bilayer) {
+    for (const auto& o : bilayer_observables()) keep(detail::compare_paired(o.name, v, ref));
+    for (const auto& c : bilayer_curves()) keep(detail::compare_curve(c, v, ref, NAN));
+    return;
+  }
+  for (const auto& s : scalar_observables())
+    keep(detail::compare_scalar(s, v, ref, margin_of(margins, s.margin_key, s.margin)));
+  for (const auto& c : curve_observables())
+    keep(detail::compare_curve(c, v, ref, margin_of(margins, c.margin_key, c.margin)));
+}
+
+std::string percent_or_plain(const Comparison& c, double x) {
+  char buf[40];
+  if (c.relative)
+    std::snprintf(buf, sizeof buf, "%+.2f %%", 100 * x);
+  else
+    std::snprintf(buf, sizeof buf, "%+.3g", x);
+  return buf;
+}
+
+// "T +3.52 % [+2.90, +4.14]": an observable's shift with its 95 % CI.
+std::string effect_text(const Comparison& c) {
+  std::string s = observable_label(c.observable) + " " + percent_or_plain(c, c.shift);
+  if (std::isfinite(c.ci_low)) s += " [" + percent_or_plain(c, c.ci_low) + ", " + percent_or_plain(c, c.ci_high) + "]";
+  return s;
+}
+
+// The variant's outcome from its tests: any differs → differs; every observable with a margin equivalent (and
+// at least one) → equivalent; otherwise inconclusive.
 void set_verdict(VariantReport& v, const std::vector<Tested>& tests) {
   if (v.cells.empty()) {
     v.verdict = v.broken.empty() ? "no data yet" : "unstable: " + v.broken.front()->reason;
@@ -97,18 +132,34 @@ void set_verdict(VariantReport& v, const std::vector<Tested>& tests) {
   const Tested* best = nullptr;
   for (const auto& t : tests)
     if (!best || t.decision->p_adjusted < best->decision->p_adjusted) best = &t;
-  if (!best) {
-    v.verdict = v.key.reference ? "reference" : "no comparable data";
+  if (best) v.min_p = best->decision->p_adjusted, v.min_p_what = best->what;
+  if (v.key.reference) {
+    v.verdict = best && best->decision->differs ? "reference; its own test differs: " + best->what
+                                                : std::string("reference");
     return;
   }
-  v.min_p = best->decision->p_adjusted;
-  v.min_p_what = best->what;
-  char buf[200];
-  if (best->decision->differs) {
-    std::snprintf(buf, sizeof buf, "differs (p = %.2g: %s)", v.min_p, best->what.c_str());
-    v.verdict = v.key.reference ? std::string("reference; ") + buf : std::string(buf);
+  for (auto& o : v.observables) o.outcome = outcome_of(o);
+  std::size_t margins = 0, equivalent = 0;
+  const Comparison* differing = nullptr;
+  for (const auto& o : v.observables) {
+    if (o.outcome == Outcome::none) continue;
+    if (std::isfinite(o.margin)) ++margins, equivalent += o.outcome == Outcome::equivalent;
+    if (o.outcome == Outcome::differs && !differing) differing = &o;  // the first in table order: T before curves
+  }
+  if (best && best->decision->differs) {
+    v.outcome = Outcome::differs;
+    v.verdict = "differs: " + (differing ? effect_text(*differing) : best->what);
+  } else if (margins > 0 && equivalent == margins) {
+    v.outcome = Outcome::equivalent;
+    v.verdict = "equivalent within the margins";
+  } else if (!best && margins == 0) {
+    v.verdict = "no comparable data";
+    return;
   } else {
-    v.verdict = v.key.reference ? "reference (its own tests pass)" : "indistinguishable from MT at this sample size";
+    v.outcome = Outcome::inconclusive;
+    v.verdict = margins == 0 ? "inconclusive (no observable has a margin: none can be shown equivalent)"
+                             : "inconclusive (" + std::to_string(equivalent) + " of " + std::to_string(margins) +
+                                   " observables shown equivalent)";
   }
   if (!v.broken.empty()) v.verdict += " [" + std::to_string(v.broken.size()) + " replica(s) unstable/failed]";
 }
@@ -190,19 +241,10 @@ void measure(VariantReport& v, double alpha) {
   if (n >= 4) v.zeta = stats::moments_of(stats::MomentSums::from_powers(n, s[0], s[1], s[2], s[3]));
 }
 
-// The ⟨ζ²⟩ = 1 tests of every variant with ζ, Holm-corrected together; and each variant's predicted shift.
-void decide_zeta(Analysis& a) {
-  std::vector<double> p;
-  std::vector<VariantReport*> tested;
-  for (auto& v : a.variants)
-    if (v.zeta.n >= 4 && std::isfinite(v.zeta.second_moment_p))
-      p.push_back(v.zeta.second_moment_p), tested.push_back(&v);
-  const std::vector<double> adj = stats::holm_adjust(p);
-  for (std::size_t k = 0; k < tested.size(); ++k) {
-    Decision& d = tested[k]->zeta_decision;
-    d.p = p[k], d.p_adjusted = adj[k], d.differs = adj[k] < a.alpha;
-  }
+// The ⟨ζ²⟩ = 1 test of a variant with ζ (a member of the study's family) and its predicted temperature shift.
+void zeta_test(Analysis& a) {
   for (auto& v : a.variants) {
+    if (v.zeta.n >= 4 && std::isfinite(v.zeta.second_moment_p)) v.zeta_decision.p = v.zeta.second_moment_p;
     const VariantReport* ref = a.reference_for(v.key);
     if (ref && ref->zeta.second_moment > 0 && v.zeta.second_moment > 0)
       v.zeta_predicted_shift = v.zeta.second_moment / ref->zeta.second_moment - 1;
@@ -210,6 +252,16 @@ void decide_zeta(Analysis& a) {
 }
 
 }  // namespace
+
+const char* to_string(Outcome o) {
+  switch (o) {
+    case Outcome::equivalent: return "equivalent";
+    case Outcome::differs: return "differs";
+    case Outcome::inconclusive: return "inconclusive";
+    case Outcome::none: break;
+  }
+  return "";
+}
 
 std::string VariantKey::label() const {
   if (reference) return generator;
@@ -284,23 +336,66 @@ const VariantReport* Analysis::reference_for(const VariantKey& k) const {
   return nullptr;
 }
 
+std::string Analysis::equivalence_text() const {
+  if (equivalence_tests == 0) return "no observable has a margin, so there are no equivalence tests.";
+  return "the " + std::to_string(equivalence_tests) +
+         " equivalence tests are Holm-corrected together over the whole study, so the chance of any false "
+         "\"equivalent\" is at most α as well.";
+}
+
 std::string Analysis::error_control_sentence() const {
-  char buf[400];
+  char buf[900];
   if (error_control == ErrorControl::study)
     std::snprintf(buf, sizeof buf,
-                  "Error control: the family-wise error rate is held at α = %g over the whole study (Holm's "
-                  "procedure over all %zu tests of every variant, observables, pass fractions and ζ correlations "
-                  "alike): the chance that a study of generators as good as the reference shows any \"differs\" "
-                  "is at most α.",
-                  alpha, family_size);
+                  "Error control: one family per study. Every two-sided test of every variant (observables, "
+                  "⟨ζ²⟩ = 1, isotropy where the cells hold components, pass fractions and ζ correlations, %zu "
+                  "tests) is Holm-corrected together, so the chance that a study of generators as good as the "
+                  "reference shows any \"differs\" is at most α = %g; %s",
+                  family_size, alpha, equivalence_text().c_str());
   else
     std::snprintf(buf, sizeof buf,
                   "Error control: the family-wise error rate is held at α = %g within each variant (Holm's "
-                  "procedure over each variant's own tests; %zu tests in %zu families): each verdict errs with "
-                  "probability at most α, so a study of %zu variants as good as the reference can show up to "
-                  "%zu × α false \"differs\" on average.",
-                  alpha, family_size, families, families, families);
+                  "procedure over each variant's own tests, ⟨ζ²⟩ = 1 included; %zu tests in %zu families): each "
+                  "verdict errs with probability at most α, so a study of %zu variants as good as the reference can "
+                  "show up to %zu × α false \"differs\" on average; %s",
+                  alpha, family_size, families, families, families, equivalence_text().c_str());
   return buf;
+}
+
+std::string Analysis::error_model_sentence() const {
+  if (bilayer)
+    return "Error model: each paired difference's variance pools the pairs' spread with both runs' own block "
+           "errors (weighted by their degrees of freedom); the membrane's observables have no margins, so its "
+           "verdicts are \"differs\" or \"inconclusive\".";
+  return "Error model: a scalar's shift is tested against the replicas' spread alone (Student's t on n + m − 2 "
+         "degrees of freedom); the runs' own block errors are not pooled in, because over null comparisons they "
+         "understate the spread (the z-score check below). Curves: the L² F test for a difference, and every "
+         "kept bin's Student t of the replicas for equivalence.";
+}
+
+bool known_good(const VariantKey& k) {
+  if (k.reference) return false;
+  if (k.generator == "philox4x32") return k.rounds >= 7;
+  if (k.generator == "threefry2x64") return k.rounds >= 13;
+  if (k.generator == "splitmix64") return true;
+  if (k.generator == "tea32" || k.generator == "tea64") return k.rounds >= 16;
+  return false;
+}
+
+std::vector<ScoreCheck> score_dispersion(const Analysis& a, const std::function<bool(const VariantKey&)>& is_null,
+                                         double confidence) {
+  std::vector<ScoreCheck> out;
+  for (const auto& spec : scalar_observables()) {
+    std::vector<double> chosen, runs;
+    for (const auto& v : a.variants) {
+      if (v.key.reference || !is_null(v.key)) continue;
+      for (const auto& o : v.observables)
+        if (o.observable == spec.name && o.available) chosen.push_back(o.score), runs.push_back(o.score_runs);
+    }
+    if (chosen.empty()) continue;
+    out.push_back({spec.name, stats::score_dispersion(chosen, confidence), stats::score_dispersion(runs, confidence)});
+  }
+  return out;
 }
 
 Analysis analyse(const StudyConfig& config, const std::vector<CellResult>& cells) {
@@ -308,19 +403,23 @@ Analysis analyse(const StudyConfig& config, const std::vector<CellResult>& cells
   a.alpha = config.tests.alpha;
   a.error_control = config.tests.error_control;
   a.bilayer = config.scene.is_bilayer();
+  a.margins = config.tests.margins;
   a.variants = group(config, cells);
   for (auto& v : a.variants) measure(v, a.alpha);
+  zeta_test(a);
   for (auto& v : a.variants) {
     const VariantReport* ref = a.reference_for(v.key);
     if (v.key.reference) continue;  // its own tests need no reference
     v.no_reference = missing_reference(ref, config.replicas, config.reference);
-    if (v.no_reference.empty()) compare(v, *ref, a.bilayer);
+    if (v.no_reference.empty()) compare(v, *ref, a.bilayer, a.margins);
   }
   // The families: a variant without its reference has no verdict, so none of its tests is decided.
   std::vector<std::vector<Tested>> tests(a.variants.size());
   std::vector<Tested> study;
+  std::vector<bool> judged(a.variants.size(), false);
   for (std::size_t k = 0; k < a.variants.size(); ++k) {
     if (!a.variants[k].no_reference.empty() || a.variants[k].cells.empty()) continue;
+    judged[k] = true;
     tests[k] = tests_of(a.variants[k]);
     a.variants[k].tests = tests[k].size();
     if (tests[k].empty()) continue;
@@ -336,8 +435,8 @@ Analysis analyse(const StudyConfig& config, const std::vector<CellResult>& cells
     holm(study, a.alpha);
     a.families = study.empty() ? 0 : 1;
   }
+  a.equivalence_tests = decide_equivalence(a.variants, judged, a.alpha);
   for (std::size_t k = 0; k < a.variants.size(); ++k) set_verdict(a.variants[k], tests[k]);
-  decide_zeta(a);
   return a;
 }
 

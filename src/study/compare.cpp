@@ -6,6 +6,7 @@
 
 #include "dpdrng/dpd/result.hpp"
 #include "dpdrng/stats/curve_test.hpp"
+#include "dpdrng/stats/equivalence.hpp"
 #include "dpdrng/stats/multiple.hpp"
 #include "dpdrng/stats/pass_fraction.hpp"
 #include "dpdrng/stats/summary.hpp"
@@ -21,12 +22,6 @@ stats::VarianceEstimate run_error(const CellResult& c, const std::string& sem_na
   if (!(e > 0) || !std::isfinite(e)) return {0, 0};
   const double dof = c.scalar(sem_name + "_dof", double(dpd::kStatBlocks - 1));
   return {e * e, std::isfinite(dof) && dof > 0 ? dof : 0.0};
-}
-
-void add_run_errors(const std::vector<const CellResult*>& cells, const std::string& sem_name,
-                    std::vector<stats::VarianceEstimate>& out) {
-  for (const auto* c : cells)
-    if (const auto e = run_error(*c, sem_name); e.dof > 0) out.push_back(e);
 }
 
 std::map<int, const CellResult*> by_replica(const std::vector<const CellResult*>& cells, const std::string& name) {
@@ -130,17 +125,50 @@ bool describe(Comparison& c, const std::vector<double>& x, const std::vector<dou
 
 }  // namespace
 
-Comparison compare_scalar(const ScalarSpec& spec, const VariantReport& v, const VariantReport& ref) {
+// The shift's normal score over the runs' own block errors: each side's mean has the variance Σ sem²/n².
+double runs_score(const std::vector<const CellResult*>& a, const std::vector<const CellResult*>& b,
+                  const std::string& name, const std::string& sem, double diff) {
+  double var = 0;
+  for (const auto* g : {&a, &b}) {
+    double s = 0;
+    std::size_t n = 0;
+    for (const auto* c : *g) {
+      const double e = c->scalar(sem, NAN);
+      if (!c->has(name) || !std::isfinite(c->scalar(name, NAN))) continue;
+      if (!std::isfinite(e)) return NAN;
+      s += e * e, ++n;
+    }
+    if (n == 0) return NAN;
+    var += s / double(n * n);
+  }
+  return var > 0 ? diff / std::sqrt(var) : NAN;
+}
+
+void set_shift(Comparison& c, double shift, double half_width) {
+  c.shift = shift;
+  c.ci_low = shift - half_width;
+  c.ci_high = shift + half_width;
+}
+
+Comparison compare_scalar(const ScalarSpec& spec, const VariantReport& v, const VariantReport& ref, double margin) {
   Comparison c;
   c.observable = spec.name;
   const auto x = values_of(v.cells, spec.name), y = values_of(ref.cells, spec.name);
   if (!describe(c, x, y)) return c;
-  const double scale = spec.absolute ? 1.0 : std::abs(c.ref);
+  const double scale = std::abs(c.ref);
+  if (!(scale > 0)) {
+    c.available = false;
+    c.note = "not applicable: the reference's mean is 0, so no relative shift";
+    return c;
+  }
   c.error_rate = std::abs(c.value - c.ref) / scale;
-  std::vector<stats::VarianceEstimate> runs;
-  add_run_errors(v.cells, spec.sem, runs);
-  add_run_errors(ref.cells, spec.sem, runs);
-  set_test(c, stats::pooled_t(x, y, runs), "t", scale);
+  const stats::TTest t = stats::pooled_t(x, y);
+  set_test(c, t, "t", scale);
+  set_shift(c, t.diff / scale, t.ci_half_width(0.95) / scale);
+  c.margin = margin;
+  c.equivalence.p = stats::equivalence_p(c.shift, c.sigma, t.dof, margin);
+  c.score = stats::normal_score(t.t, t.dof);
+  c.score_runs = runs_score(v.cells, ref.cells, spec.name, spec.sem, t.diff);
   return c;
 }
 
@@ -171,11 +199,36 @@ Comparison compare_paired(const std::string& base, const VariantReport& v, const
   c.diff = t.diff;
   c.diff_ci = t.ci_half_width(0.95);
   set_test(c, t, "paired t", 1.0);
+  c.relative = false;
+  set_shift(c, t.diff, c.diff_ci);
+  c.score = stats::normal_score(t.t, t.dof);
   if (!std::isfinite(t.p_value)) c.note = "too few paired replicas for a P-value";
   return c;
 }
 
-Comparison compare_curve(const CurveSpec& spec, const VariantReport& v, const VariantReport& ref) {
+// Every kept bin's relative difference from the reference, a Student t of the replicas: the bin whose 95 % CI
+// reaches furthest from 0 is the curve's shift, and the largest of the bins' equivalence P-values its
+// equivalence P-value (NaN when a bin cannot be tested).
+void bin_shifts(Comparison& c, const stats::Curves& x, const stats::Curves& y, const std::vector<std::size_t>& bins,
+                const std::vector<double>& my, double margin) {
+  double reach = -1, p = 0;
+  for (const std::size_t k : bins) {
+    if (!(my[k] > 0)) continue;
+    std::vector<double> xk, yk;
+    for (const auto& curve : x) xk.push_back(curve[k]);
+    for (const auto& curve : y) yk.push_back(curve[k]);
+    const stats::TTest t = stats::pooled_t(xk, yk);
+    const double rel = t.diff / my[k], half = t.ci_half_width(0.95) / my[k];
+    if (!std::isfinite(half)) return;
+    if (std::abs(rel) + half > reach) reach = std::abs(rel) + half, set_shift(c, rel, half);
+    if (margin > 0) p = std::max(p, stats::equivalence_p(rel, t.se / my[k], t.dof, margin));
+  }
+  if (!(margin > 0) || reach < 0) return;
+  c.margin = margin;
+  c.equivalence.p = p;
+}
+
+Comparison compare_curve(const CurveSpec& spec, const VariantReport& v, const VariantReport& ref, double margin) {
   Comparison c;
   c.observable = spec.name;
   c.test = "F";
@@ -211,6 +264,7 @@ Comparison compare_curve(const CurveSpec& spec, const VariantReport& v, const Va
   c.dof = t.dof1;
   c.dof2 = t.dof2;
   c.decision.p = t.p_value;
+  bin_shifts(c, x, y, bins, my, margin);
   if (!std::isfinite(t.p_value)) c.note = "too few replicas for a P-value";
   return c;
 }

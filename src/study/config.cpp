@@ -11,6 +11,7 @@
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/dpd/bilayer.hpp"
 #include "dpdrng/rng/registry.hpp"
+#include "dpdrng/study/observables.hpp"
 #include "dpdrng/study/sweep.hpp"
 #include "toml_section.hpp"
 
@@ -121,6 +122,15 @@ void check_bilayer_box(Section& sc, const SceneParams& s) {
                              " beads of the scene's lipids");
 }
 
+// [tests.margins]: each key an observable's (observables.hpp), each value in (0, 1]; the rest at their defaults.
+std::map<std::string, double> valid_margins(Section& te) {
+  Section m = te.sub("margins");
+  std::map<std::string, double> out;
+  for (const auto& d : margin_defaults()) out[d.key] = m.num(d.key, d.margin, 0, 1, true);
+  m.finish();
+  return out;
+}
+
 }  // namespace
 
 std::string fnv1a64_hex(const std::string& text) {
@@ -168,6 +178,8 @@ nlohmann::json StudyConfig::canonical() const {
         {"nist_replicas", tests.nist_replicas}}},
       {"cost", {{"numbers", cost.numbers}}},
   };
+  // The margins are left out: they judge the cells, they do not make them, so a study directory may be
+  // reported again under other margins.
   // Present only when it is not the default, so that configs without the key keep their hash.
   if (tests.error_control != ErrorControl::study) j["tests"]["error_control"] = to_string(tests.error_control);
   if (feeds != std::vector<rng::Feed>{rng::Feed::halves}) j["feeds"] = names_of(feeds);
@@ -315,6 +327,7 @@ StudyConfig parse_config(const std::string& toml_text, const std::string& origin
   }
   t.nist_distributions = valid_distributions(te, "nist_distributions", t.nist_distributions);
   t.nist_replicas = static_cast<int>(te.integer("nist_replicas", t.nist_replicas, 0, c.replicas));
+  t.margins = valid_margins(te);
   if (bilayer) {
     const char* why = "must be 0 for the bilayer scene: its cells tap no raw numbers (the water scene tests the "
                       "generators' outputs)";

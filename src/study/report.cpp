@@ -36,6 +36,12 @@ std::string fmt(const char* f, double x) {
   return buf;
 }
 
+std::string p_text(double p) {
+  if (!std::isfinite(p)) return "–";
+  if (p < kPFloor) return "< 1e-12";
+  return fmt("%.2g", p);
+}
+
 std::vector<std::string> distributions_of(const Analysis& a) {
   std::vector<std::string> dists;
   for (const auto& v : a.variants)
@@ -188,7 +194,7 @@ std::string correlation_markdown(const Analysis& a) {
         if (c.what == what && c.available) {
           const std::string b = c.decision.differs ? "**" : "";
           return b + detail::fmt("%+.4f", c.worst_r) + b + " (" +
-                 (c.decision.tested() ? detail::fmt("%.2g", c.decision.p_adjusted) : std::string("–")) + ")";
+                 detail::p_text(c.decision.p_adjusted) + ")";
         }
       return std::string("–");
     };
@@ -210,6 +216,7 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
   const std::vector<std::string> dists = detail::distributions_of(a);
 
   write(dir / "summary.csv", summary_csv(a));
+  write(dir / "verdicts.csv", verdicts_csv(a));
   write(dir / "pass_table.csv", pass_table_csv(a));
   write(dir / "observables.csv", observables_csv(a));
   write(dir / "zeta.csv", zeta_csv(a));
@@ -230,14 +237,16 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
      << detail::unreadable_cells_markdown(options.unreadable);
 
   md << "## Verdicts\n\n"
-     << "Each variant (generator × rounds × distribution and feed × seeding) is compared with MT19937 run with identical "
-        "settings and the same initial states. *Indistinguishable* means that no test of the variant (observables, "
-        "pass fractions, ζ correlations) differs at α = "
-     << a.alpha
-     << " under the error control stated above; it is a statement about this sample size, not a proof of "
-        "equality. *Smallest corrected p* is the smallest of the variant's P-values after that correction: the "
-        "verdict says *differs* exactly when it is below α. Every bold mark and chart below reads the same "
-        "corrected decisions; a variant whose MT19937 replicas are missing or unreadable gets no verdict.\n\n"
+     << how_to_read_verdicts(config, a) << "\n"
+     << "- " << a.error_model_sentence() << "\n\n"
+     << "The table is `verdicts.csv` (its rows \"all\" are the verdicts; the others each observable's and test's "
+        "shift, 95 % CI, margin, corrected P-values and outcome). **Bold**: differs.\n\n"
+     << verdict_table_markdown(a) << "\n"
+     << "### Error model check\n\n" << score_check_markdown(a) << "\n"
+     << "### Variants, cost and NIST\n\n"
+     << "*Smallest corrected p*: the smallest two-sided P-value of the variant after the error control (below α "
+        "exactly when the verdict says *differs*). A variant whose MT19937 replicas are missing or unreadable gets "
+        "no verdict.\n\n"
      << summary_markdown(a) << "\n";
   for (const auto& d : dists)
     if (have("speed_vs_accuracy_" + d)) md << chart("speed_vs_accuracy_" + d, "speed against accuracy, " + d);
@@ -251,7 +260,7 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
         "first block through Φ⁻¹. By fluctuation–dissipation k_BT ∝ σ²⟨ζ²⟩, so ⟨ζ²⟩/⟨ζ²⟩_MT − 1 predicts the "
         "temperature shift; the measured one (replica means against MT of the same feed, 95 % from the "
         "comparison's pooled σ) stands beside it. ⟨ζ²⟩ = 1 is tested on the large-sample normal law of the mean "
-        "of ζ² (its variance from ⟨ζ⁴⟩), Holm-corrected over the variants shown; **bold** = differs.\n\n"
+        "of ζ² (its variance from ⟨ζ⁴⟩), a member of the study's one Holm family; **bold** = differs.\n\n"
      << zeta_markdown(a) << "\n"
      << "### Which tests flag each generator × feed\n\n"
      << "χ² and lag-1 t look at one output word at a time and NIST at its bits; none of them sees how two "
@@ -274,18 +283,14 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
   }
 
   md << "## Physical observables against MT\n\n"
-     << "Each cell: error rate (1σ) and the corrected P-value. Scalars (T, its fluctuation, P, D, the velocity "
-        "PDF's error against Maxwell–Boltzmann): error rate = |mean − mean_MT| / |mean_MT| over replicas "
-        "(|mean − mean_MT| for the velocity PDF's error, itself a rate); a two-sample t-test whose variance pools "
-        "both groups' replica spreads with every run's own standard error, each weighted by its degrees of "
-        "freedom (means: from the integrated autocorrelation time; T's fluctuation, D and the velocity PDF's "
-        "error: jackknife over 20 blocks of steps or beads), so that the test does not rest on the 2(n − 1) of "
-        "the replicas alone; 1σ = the "
-        "standard error of that difference on the same scale. Curves (velocity PDF, g(r), MSD): error rate = "
-        "mean relative deviation of the variant's mean curve from MT's; the L² F test of the replicas' curves "
-        "(the squared difference of the mean curves summed over the bins, weighted by counting noise for the "
-        "histograms and relatively for the MSD, calibrated by the effective number of independent bins). "
-        "**Bold** = differs after the error control.\n\n";
+     << "Each cell: the shift against MT with its 95 % CI, the outcome (equiv. = equivalent, ? = inconclusive) "
+        "and the corrected two-sided P-value. Scalars (T, its fluctuation, P, D): shift = (mean − mean_MT) / "
+        "mean_MT over the replicas, in %, Student's two-sample t on the replicas' values (n + m − 2 degrees of "
+        "freedom). Curves (velocity PDF, g(r), MSD): the shift is the relative difference from MT's mean curve "
+        "in the kept bin whose 95 % CI reaches furthest from 0; equivalence needs every kept bin inside the "
+        "margin; the two-sided test is the L² F test of the replicas' curves (the squared difference of the mean "
+        "curves summed over the bins, weighted by counting noise for the histograms and relatively for the MSD, "
+        "calibrated by the effective number of independent bins). **Bold** = differs after the error control.\n\n";
   for (const auto& d : dists) {
     md << "### " << d << "\n\n" << observables_markdown(a, d) << "\n";
     for (const auto& [n, alt] : {std::pair{"temperature_vs_rounds_", "temperature vs rounds"},
@@ -340,7 +345,8 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
 
   md << detail::broken_cells_markdown(cells);
   md << "\n## Files\n\n"
-     << "`summary.csv`, `pass_table.csv`, `observables.csv`, `zeta.csv`, `cells.csv` (every scalar of every cell)";
+     << "`verdicts.csv` (one row per variant × observable or test, and per variant), `summary.csv`, "
+        "`pass_table.csv`, `observables.csv`, `zeta.csv`, `cells.csv` (every scalar of every cell)";
   for (const auto& f : nist_files) md << ", `" << f << "`";
   md << "; charts in `charts/` (SVG, PNG and the gnuplot script of each); all data in `../study.h5` (h5py: "
         "`h5py.File('study.h5')['cells']`).\n";

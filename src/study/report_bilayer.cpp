@@ -72,7 +72,7 @@ std::string bilayer_differences_markdown(const Analysis& a, const std::string& d
     if (v.key.reference || v.key.noise() != distribution) continue;
     for (const auto& c : v.observables) {
       const std::string b = c.decision.differs ? "**" : "";
-      const std::string corrected = c.decision.tested() ? fmt("%.2g", c.decision.p_adjusted) : "–";
+      const std::string corrected = detail::p_text(c.decision.p_adjusted);
       if (!c.available) {
         o << "| " << v.key.label_and_seeding() << " | " << label_of(c.observable) << " | – | – | – | – | – | " << c.note << " |\n";
         continue;
@@ -81,12 +81,12 @@ std::string bilayer_differences_markdown(const Analysis& a, const std::string& d
         any_curve = true;
         curves << "| " << v.key.label_and_seeding() << " | " << label_of(c.observable) << " | " << b << fmt("%.2e", c.error_rate)
                << b << " | " << fmt("%.2f", c.statistic) << " (" << fmt("%.1f", c.dof) << ") | "
-               << fmt("%.2g", c.decision.p) << " | " << corrected << " |\n";
+               << detail::p_text(c.decision.p) << " | " << corrected << " |\n";
         continue;
       }
       o << "| " << v.key.label_and_seeding() << " | " << label_of(c.observable) << " | " << fmt("%.4f", c.value) << " | "
         << fmt("%.4f", c.ref) << " | " << b << fmt("%+.4f", c.diff) << b << " [± " << fmt("%.4f", c.diff_ci) << "] | "
-        << fmt("%.4f", c.sigma) << " | " << fmt("%.2g", c.decision.p) << " | " << corrected << " |\n";
+        << fmt("%.4f", c.sigma) << " | " << detail::p_text(c.decision.p) << " | " << corrected << " |\n";
     }
   }
   if (any_curve) o << '\n' << curves.str();
@@ -119,6 +119,7 @@ fs::path write_bilayer_report(const StudyConfig& config, const std::vector<CellR
   detail::write_text(dir / "summary.csv", summary_csv(a));
   detail::write_text(dir / "bilayer_table.csv", bilayer_table_csv(a));
   detail::write_text(dir / "bilayer_differences.csv", bilayer_differences_csv(a));
+  detail::write_text(dir / "verdicts.csv", verdicts_csv(a));
   detail::write_text(dir / "cells.csv", detail::cells_csv(cells));
   std::vector<std::string> made;
   if (options.charts) made = write_bilayer_charts(a, dir / "charts", options.log);
@@ -129,12 +130,14 @@ fs::path write_bilayer_report(const StudyConfig& config, const std::vector<CellR
      << detail::unreadable_cells_markdown(options.unreadable);
   md << "## Verdicts\n\n"
      << "Each generator is compared with MT19937 run with identical settings from the same initial states (one per "
-        "replica). *Indistinguishable* means no observable differs at α = "
+        "replica). *Differs* means an observable differs at α = "
      << a.alpha
      << " under the error control stated above (paired t-tests across replicas for the scalars, L² F tests for "
-        "the density profiles); it is a statement about this sample size. *Smallest corrected p*: the smallest "
+        "the density profiles). The membrane's observables have no equivalence margins, so a generator that does "
+        "not differ is *inconclusive*: nothing shows it equivalent. *Smallest corrected p*: the smallest "
         "P-value after that correction, below α exactly when the verdict says *differs*. Bilayer cells tap no raw "
-        "numbers: the generators' χ², lag-1 t and NIST results are the water study's.\n\n"
+        "numbers: the generators' χ², lag-1 t and NIST results are the water study's.\n\n- "
+     << a.error_model_sentence() << "\n\n"
      << summary_markdown(a) << "\n";
 
   md << "## Membrane observables per generator\n\n"
@@ -152,8 +155,7 @@ fs::path write_bilayer_report(const StudyConfig& config, const std::vector<CellR
 
   md << "## Differences from MT19937\n\n"
      << "difference = mean over replicas of (generator − MT) on the same initial state, with its 95 % CI and the "
-        "paired t-test, whose variance pools the differences' spread with the runs' own block standard errors "
-        "(as in the water study); 1σ = the standard error of the difference. **Bold** = differs at α = "
+        "paired t-test, whose variance pools the differences' spread with the runs' own block standard errors; 1σ = the standard error of the difference. **Bold** = differs at α = "
      << a.alpha << " after the error control. Density profiles: mean relative deviation of the generator's mean "
         "profile from MT's over bins above a tenth of the peak, and the L² F test of the replicas' profiles with "
         "its effective number of independent bins d.\n\n";
@@ -184,7 +186,8 @@ fs::path write_bilayer_report(const StudyConfig& config, const std::vector<CellR
 
   md << detail::broken_cells_markdown(cells);
   md << "\n## Files\n\n"
-     << "`summary.csv`, `bilayer_table.csv` (means and CIs), `bilayer_differences.csv` (differences and their tests), "
+     << "`summary.csv`, `verdicts.csv` (one row per generator × observable and per generator), "
+        "`bilayer_table.csv` (means and CIs), `bilayer_differences.csv` (differences and their tests), "
         "`cells.csv` (every scalar of every cell); charts in `charts/` (SVG, PNG and the gnuplot script of "
         "each); all data in `../study.h5` (each cell's profile/z, profile/head, profile/tail, profile/water).\n";
   detail::write_text(dir / "report.md", md.str());

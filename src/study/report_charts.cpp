@@ -201,9 +201,9 @@ std::vector<std::string> write_charts(const Analysis& a, const std::vector<CellR
                "k_BT (kinetic)", true, false, "", {}, false};
     // The verdict's own evidence: −log₁₀ of the smallest corrected P-value, so that a point lies above the α
     // line exactly when its verdict says "differs". Log axis: P-values above 0.98 sit on the floor at 0.01,
-    // those below 1e-300 (or 0) at 300.
+    // those below the report's floor of 1e-12 (no error model here supports smaller) at 12.
     Chart speed{"speed_vs_accuracy_" + dist, "Speed against evidence of a difference from MT (" + dist + ")",
-                "ms per DPD step (cost)", "-log10(smallest corrected p) (log scale, clipped to [0.01, 300])",
+                "ms per DPD step (cost)", "-log10(smallest corrected p) (log scale, clipped to [0.01, 12])",
                 false, true,
                 "set offsets graph 0.05, graph 0.15, graph 0.1, graph 0.1\nset yrange [0.01:*]\n", {}, false};
     if (ref) {
@@ -223,7 +223,7 @@ std::vector<std::string> write_charts(const Analysis& a, const std::vector<CellR
     pass.extra += hline(1 - a.alpha, "1 − α", "gray30") + "set yrange [*:1.005]\n";
     temp.auto_logy = true;
     speed.extra += hline(-std::log10(a.alpha), "α (" + detail::num(a.alpha) + ")", "red", 0.9);
-    Line ok{"indistinguishable from MT", "using 1:2:3 with labels point pt 7 ps 1.2 lc rgb 'dark-green' offset 0.8,0.6 left",
+    Line ok{"does not differ from MT", "using 1:2:3 with labels point pt 7 ps 1.2 lc rgb 'dark-green' offset 0.8,0.6 left",
             {}, {}};
     Line bad{"differs from MT", "using 1:2:3 with labels point pt 5 ps 1.2 lc rgb 'red' offset 0.8,0.6 left", {}, {}};
     for (const auto& [fam, vs] : fams) {
@@ -250,7 +250,7 @@ std::vector<std::string> write_charts(const Analysis& a, const std::vector<CellR
         }
         if (std::isfinite(v->step_ms) && std::isfinite(v->min_p)) {
           Line& target = v->min_p < a.alpha ? bad : ok;
-          target.rows.push_back({v->step_ms, std::max(0.01, -std::log10(std::max(v->min_p, 1e-300)))});
+          target.rows.push_back({v->step_ms, std::max(0.01, -std::log10(std::max(v->min_p, detail::kPFloor)))});
           target.labels.push_back(v->key.label());
         }
       }

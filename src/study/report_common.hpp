@@ -15,6 +15,9 @@ namespace dpdrng::study::detail {
 void write_text(const std::filesystem::path& p, const std::string& text);  // throws if it cannot
 std::string num(double x);                                                  // "%.6g", "" when not finite
 std::string fmt(const char* f, double x);                                   // printf format f, "–" when not finite
+// A P-value for reading: "%.2g", "< 1e-12" below the floor (no error model here supports smaller), "–" for NaN.
+inline constexpr double kPFloor = 1e-12;
+std::string p_text(double p);
 std::string csv_quote(const std::string& s);                                 // RFC 4180 quoting where needed
 std::string csv_line(const std::vector<std::string>& fields);                // quoted fields, commas, '\n'
 std::string cells_csv(const std::vector<CellResult>& cells);                // every scalar of every cell

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "dpdrng/stats/nist/battery.hpp"
+#include "dpdrng/study/observables.hpp"
 #include "dpdrng/study/report.hpp"
 #include "report_common.hpp"
 
@@ -23,8 +24,8 @@ std::string pass_cell(const PassSummary& p) {
   return b + s.substr(0, s.find(' ')) + b + s.substr(s.find(' '));
 }
 
-// "p = 3.1e-05" for a decided test, "–" for one that could not be made.
-std::string adjusted(const Decision& d) { return d.tested() ? fmt("%.2g", d.p_adjusted) : "–"; }
+// The corrected P-value of a decided test, floored; "–" for one that could not be made.
+std::string adjusted(const Decision& d) { return detail::p_text(d.p_adjusted); }
 
 const PassSummary* find_pass(const VariantReport& v, const std::string& test, const std::string& stream) {
   for (const auto& p : v.passes)
@@ -47,16 +48,23 @@ std::string speed_vs_8(double at8_ms, double step_ms) {
   return r >= 1 ? fmt("%.2f× faster", r) : fmt("%.2f× slower", 1 / r);
 }
 
-const char* kObservableNames[][2] = {
-    {"temperature_mean", "T"},        {"temperature_std", "T fluctuation"},
-    {"pressure_mean", "P"},           {"diffusion_coefficient", "D"},
-    {"vpdf_error_mb", "v-PDF vs MB"}, {"vpdf_vs_mt", "v-PDF vs MT"},
-    {"rdf_vs_mt", "g(r) vs MT"},      {"msd_vs_mt", "MSD vs MT"},
-};
-std::string pretty(const std::string& o) {
-  for (const auto& n : kObservableNames)
-    if (o == n[0]) return n[1];
-  return o;
+std::string pretty(const std::string& o) { return observable_label(o); }
+
+// A shift on its own scale: "+0.12 %" for relative ones, "+0.0012" for absolute ones.
+std::string shift_text(const Comparison& c, double x) {
+  return c.relative ? fmt("%+.2f %%", 100 * x) : fmt("%+.3g", x);
+}
+
+// An observable's cell in a table: the shift [95 % CI] first, bold when it differs, then the outcome and the
+// corrected two-sided P-value.
+std::string effect_cell(const Comparison& c) {
+  const std::string b = c.decision.differs ? "**" : "";
+  std::string s = b + shift_text(c, c.shift) + b;
+  if (std::isfinite(c.ci_low)) s += " [" + shift_text(c, c.ci_low) + ", " + shift_text(c, c.ci_high) + "]";
+  const char* mark = c.outcome == Outcome::equivalent ? "equiv." : c.outcome == Outcome::differs ? "differs"
+                     : c.outcome == Outcome::inconclusive ? "?" : "";
+  if (*mark) s += std::string(" ") + mark;
+  return s + " (p " + adjusted(c.decision) + ")";
 }
 
 }  // namespace
@@ -94,22 +102,26 @@ std::string pass_table_csv(const Analysis& a) {
 
 std::string observables_csv(const Analysis& a) {
   std::ostringstream o;
-  o << "generator,rounds,distribution,seeding,dt,observable,replicas,value,value_sd,reference_replicas,reference,"
-       "reference_sd,error_rate,sigma,test,statistic,dof,dof2,p_value,p_adjusted,differs,note\n";
+  o << "generator,rounds,distribution,seeding,dt,observable,shift,ci_low,ci_high,relative,margin,outcome,replicas,"
+       "value,value_sd,reference_replicas,reference,reference_sd,error_rate,sigma,test,statistic,dof,dof2,p_value,"
+       "p_adjusted,differs,p_equivalence,p_equivalence_adjusted,equivalent,score,score_runs,note\n";
   for (const auto& v : a.variants)
     for (const auto& c : v.observables)
       o << v.key.generator << ',' << v.key.rounds << ',' << v.key.noise() << ',' << v.key.seeding_name() << ','
-        << num(v.key.dt) << ',' << c.observable << ',' << c.n << ',' << num(c.value) << ',' << num(c.value_sd) << ','
+        << num(v.key.dt) << ',' << c.observable << ',' << num(c.shift) << ',' << num(c.ci_low) << ','
+        << num(c.ci_high) << ',' << int(c.relative) << ',' << num(c.margin) << ',' << to_string(c.outcome) << ','
+        << c.n << ',' << num(c.value) << ',' << num(c.value_sd) << ','
         << c.n_ref << ',' << num(c.ref) << ',' << num(c.ref_sd) << ',' << num(c.error_rate) << ',' << num(c.sigma)
         << ',' << c.test << ',' << num(c.statistic) << ',' << num(c.dof) << ',' << num(c.dof2) << ','
         << num(c.decision.p) << ',' << num(c.decision.p_adjusted) << ',' << int(c.decision.differs) << ','
-        << csv_quote(c.note) << '\n';
+        << num(c.equivalence.p) << ',' << num(c.equivalence.p_adjusted) << ',' << int(c.equivalence.equivalent)
+        << ',' << num(c.score) << ',' << num(c.score_runs) << ',' << csv_quote(c.note) << '\n';
   return o.str();
 }
 
 std::string observables_markdown(const Analysis& a, const std::string& distribution) {
   std::ostringstream o;
-  // One column per observable: "error rate (1σ) p", bold where the error control says it differs.
+  // One column per observable: effect_cell, bold where the error control says it differs.
   std::vector<std::string> names;
   for (const auto& v : a.variants)
     for (const auto& c : v.observables)
@@ -131,10 +143,7 @@ std::string observables_markdown(const Analysis& a, const std::string& distribut
         o << " – |";
         continue;
       }
-      const std::string b = c->decision.differs ? "**" : "";
-      o << ' ' << b << fmt("%.2e", c->error_rate) << b;
-      if (std::isfinite(c->sigma)) o << " (" << fmt("%.1e", c->sigma) << ")";
-      o << " p " << adjusted(c->decision) << " |";
+      o << ' ' << effect_cell(*c) << " |";
     }
     o << '\n';
   }
@@ -148,7 +157,7 @@ std::string summary_markdown(const Analysis& a) {
   for (const auto& v : a.variants) {
     o << "| " << v.key.label() << " | " << v.key.noise() << " | " << v.key.seeding_name()
       << " | " << v.cells.size() << (v.broken.empty() ? std::string() : fmt("+%.0f broken", double(v.broken.size())))
-      << " | " << v.verdict << " | " << fmt("%.2g", v.min_p) << " | "
+      << " | " << v.verdict << " | " << detail::p_text(v.min_p) << " | "
       << (std::isfinite(v.nist_failed) ? fmt("%.0f", v.nist_failed) + " / " + fmt("%.0f", v.nist_columns) : "–")
       << " | " << fmt("%.2f", v.ns_per_number) << " | " << fmt("%.3f", v.step_ms) << " | "
       << fmt("%.0f %%", 100 * v.rng_share) << " |\n";

@@ -1,9 +1,10 @@
-// Verdicts: a planted difference is found, identical generators are called indistinguishable, and the
-// statistics under them agree with hand computations.
+// Verdicts: a planted difference is found, identical generators are never called different and are called
+// equivalent where the margins allow, and the statistics under them agree with hand computations.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <regex>
 
 #include "dpdrng/stats/mean_tests.hpp"
 #include "dpdrng/stats/multiple.hpp"
@@ -51,9 +52,14 @@ std::vector<const Decision*> decisions(const Analysis& a) {
       if (p.decision.tested()) d.push_back(&p.decision);
     for (const auto& c : v.correlations)
       if (c.decision.tested()) d.push_back(&c.decision);
+    if (v.zeta_decision.tested()) d.push_back(&v.zeta_decision);
   }
   return d;
 }
+
+// Margins wide enough for the fake cells' spread (T 0.08 %, its fluctuation 0.6 %, D 2 %, curves 1 % per bin).
+const std::string kWideMargins =
+    "[tests.margins]\ntemperature_std = 0.2\ndiffusion = 0.3\nvpdf = 0.5\nrdf = 0.5\nmsd = 0.5\n";
 
 std::size_t count(const std::string& text, const std::string& what) {
   std::size_t n = 0;
@@ -68,17 +74,64 @@ TEST(StudyAnalysis, CurveErrorSkipsBinsBelowTheThreshold) {
   EXPECT_TRUE(std::isnan(curve_error({1, 2}, {1, 2, 3}, 0)));
 }
 
-TEST(StudyAnalysis, IdenticalGeneratorsAreIndistinguishable) {
+// Identical generators never differ; with the default margins the temperature (spread 0.08 %, margin 0.5 %) is
+// shown equivalent while D (spread 2 %, margin 3 %) is not, so the variant is inconclusive.
+TEST(StudyAnalysis, IdenticalGeneratorsDoNotDiffer) {
   const StudyConfig cfg = parse_config(kConfig, "c.toml");
   const Analysis a = analyse(cfg, fake_cells(cfg, 0.0));
   const auto& v = find(a, "tea32", 8);
   EXPECT_EQ(v.cells.size(), 6u);
-  EXPECT_EQ(v.verdict, "indistinguishable from MT at this sample size");
+  EXPECT_EQ(v.outcome, Outcome::inconclusive);
+  EXPECT_EQ(v.verdict.rfind("inconclusive", 0), 0u) << v.verdict;
   for (const auto& o : v.observables) {
     EXPECT_TRUE(o.available) << o.observable;
     EXPECT_TRUE(o.decision.tested()) << o.observable;
     EXPECT_FALSE(o.decision.differs) << o.observable;
+    EXPECT_TRUE(o.ci_low <= o.shift && o.shift <= o.ci_high) << o.observable;
   }
+  EXPECT_EQ(comparison(v, "temperature_mean").outcome, Outcome::equivalent);
+  EXPECT_EQ(comparison(v, "diffusion_coefficient").outcome, Outcome::inconclusive);
+}
+
+// With margins the data can meet, every observable of a generator identical to MT is equivalent, and so is the
+// variant; verdicts.csv says so in its "all" row.
+TEST(StudyAnalysis, AVariantIsEquivalentWhenEveryObservableIs) {
+  const StudyConfig cfg = parse_config(kConfig + kWideMargins, "c.toml");
+  const Analysis a = analyse(cfg, fake_cells(cfg, 0.0));
+  const auto& v = find(a, "tea32", 8);
+  for (const auto& o : v.observables) EXPECT_EQ(o.outcome, Outcome::equivalent) << o.observable;
+  EXPECT_EQ(v.outcome, Outcome::equivalent);
+  EXPECT_EQ(v.verdict, "equivalent within the margins");
+  const std::string csv = verdicts_csv(a);
+  EXPECT_EQ(csv.rfind("variant,seeding,distribution,feed,integrator,dt,replicas,observable,shift,ci_low,ci_high,"
+                      "margin,p_adjusted,",
+                      0),
+            0u)
+      << csv;
+  EXPECT_NE(csv.find("\ntea32(8),distance,gauss,halves,,0.04,6,all,,,,,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",equivalent\n"), std::string::npos) << csv;
+}
+
+// The equivalence tests of the whole study form one Holm family (a false "equivalent" is what a user pays for),
+// and each is Schuirmann's test of the relative shift at its observable's margin.
+TEST(StudyAnalysis, EquivalenceIsHolmOverTheStudysEquivalenceTests) {
+  const StudyConfig cfg = parse_config(kConfig + kWideMargins, "c.toml");
+  const Analysis a = analyse(cfg, fake_cells(cfg, 0.0));
+  std::vector<const Comparison*> family;
+  std::vector<double> p;
+  for (const auto& v : a.variants)
+    for (const auto& o : v.observables)
+      if (o.equivalence.tested()) family.push_back(&o), p.push_back(o.equivalence.p);
+  ASSERT_EQ(a.equivalence_tests, family.size());
+  ASSERT_GT(family.size(), 10u);
+  const auto adjusted = dpdrng::stats::holm_adjust(p);
+  for (std::size_t k = 0; k < family.size(); ++k) {
+    EXPECT_EQ(family[k]->equivalence.p_adjusted, adjusted[k]);
+    EXPECT_EQ(family[k]->equivalence.equivalent, adjusted[k] < a.alpha);
+  }
+  const Comparison& t = comparison(find(a, "tea32", 8), "temperature_mean");
+  EXPECT_EQ(t.margin, 0.005);
+  EXPECT_EQ(t.equivalence.p, dpdrng::stats::equivalence_p(t.shift, t.sigma, t.dof, 0.005));
 }
 
 TEST(StudyAnalysis, APlantedTemperatureShiftIsCalledADifference) {
@@ -86,31 +139,41 @@ TEST(StudyAnalysis, APlantedTemperatureShiftIsCalledADifference) {
   // 1 % against a replica spread of ~0.1 %: far beyond the noise.
   const Analysis a = analyse(cfg, fake_cells(cfg, 0.0103));
   const auto& v = find(a, "tea32", 1);
-  EXPECT_EQ(v.verdict.rfind("differs (p = ", 0), 0u) << v.verdict;
+  EXPECT_EQ(v.outcome, Outcome::differs);
+  EXPECT_EQ(v.verdict.rfind("differs: T +1.", 0), 0u) << v.verdict;
   EXPECT_EQ(v.min_p_what, "temperature_mean");
   const Comparison& t = comparison(v, "temperature_mean");
   EXPECT_TRUE(t.decision.differs);
+  EXPECT_EQ(t.outcome, Outcome::differs);
   EXPECT_GT(t.error_rate / t.sigma, 5);
+  EXPECT_GT(t.ci_low, 0.005);  // the whole CI beyond the margin
   EXPECT_GE(t.decision.p_adjusted, t.decision.p);
-  EXPECT_EQ(find(a, "tea32", 8).verdict, "indistinguishable from MT at this sample size");
+  EXPECT_NE(find(a, "tea32", 8).outcome, Outcome::differs);
 }
 
-// Every run's own error joins the replicas' spreads, weighted by the degrees of freedom the cell stores. Here all
-// twelve runs report T = 1.03 exactly (no spread) with an error of 0.002 on 19 degrees of freedom: the pooled
-// variance is 12 · 19 · 0.002² / (10 + 12 · 19), and 1σ of the relative difference that sd · √(2/6) / 1.03.
-TEST(StudyAnalysis, RunErrorsArePooledWithTheReplicaSpreads) {
+// The error model is the replicas' spread: Student's two-sample t on the replicas' values, n + m − 2 degrees of
+// freedom, whatever block errors the runs report (here runs that claim a 100 times smaller error change nothing).
+TEST(StudyAnalysis, TheErrorModelIsTheReplicasSpread) {
   const StudyConfig cfg = parse_config(kConfig, "c.toml");
   auto cells = fake_cells(cfg, 0.0);
+  const Analysis plain = analyse(cfg, cells);
   for (auto& c : cells) {
-    c.scalars["temperature_mean"] = 1.03;
-    c.scalars["temperature_sem"] = 0.002;
-    c.scalars["temperature_sem_dof"] = 19;
+    c.scalars["temperature_sem"] = 1e-5;
+    c.scalars["temperature_sem_dof"] = 1000;
   }
-  const Analysis a = analyse(cfg, cells);  // held: the comparison below refers into it
-  const Comparison& t = comparison(find(a, "tea32", 8), "temperature_mean");
-  EXPECT_EQ(t.dof, 10.0 + 12 * 19);
-  EXPECT_NEAR(t.sigma, 0.002 * std::sqrt(12.0 * 19 / t.dof) * std::sqrt(2.0 / 6) / 1.03, 1e-15);
-  EXPECT_EQ(t.decision.p, 1.0);
+  const Analysis a = analyse(cfg, cells);
+  const auto& v = find(a, "tea32", 8);
+  const Comparison& t = comparison(v, "temperature_mean");
+  std::vector<double> x, y;
+  for (const auto* c : v.cells) x.push_back(c->scalar("temperature_mean", NAN));
+  for (const auto* c : a.reference_for(v.key)->cells) y.push_back(c->scalar("temperature_mean", NAN));
+  const auto ref = dpdrng::stats::pooled_t(x, y);
+  EXPECT_EQ(t.dof, 10.0);
+  EXPECT_NEAR(t.sigma, ref.se / std::abs(dpdrng::stats::mean(y)), 1e-15);
+  EXPECT_EQ(t.decision.p, ref.p_value);
+  EXPECT_EQ(t.sigma, comparison(find(plain, "tea32", 8), "temperature_mean").sigma);
+  // The runs' block errors still give their own score, for the error-model check.
+  EXPECT_GT(std::abs(t.score_runs), 10 * std::abs(t.score));
 }
 
 TEST(StudyAnalysis, PassFractionsPoolReplicasAndKeepTea64OutputsApart) {
@@ -187,7 +250,7 @@ TEST(StudyAnalysis, ErrorControlIsHolmOverTheChosenFamily) {
         EXPECT_EQ(all[k]->p_adjusted, adjusted[k]);
         EXPECT_EQ(all[k]->differs, adjusted[k] < a.alpha);
       }
-      EXPECT_NE(a.error_control_sentence().find("over the whole study"), std::string::npos);
+      EXPECT_NE(a.error_control_sentence().find("one family per study"), std::string::npos);
     } else {
       EXPECT_EQ(a.families, a.variants.size());  // every variant here has tests
       for (const auto& v : a.variants) {
@@ -237,7 +300,7 @@ TEST(StudyReport, BoldMarksAreTheDecisions) {
   EXPECT_EQ(count(observables_markdown(a, "gauss"), "**") / 2, observables);
   EXPECT_EQ(count(pass_table_markdown(a, "gauss"), "**") / 2, passes);
   for (const auto& v : a.variants)
-    EXPECT_EQ(v.verdict.rfind("differs", 0) == 0, v.min_p < a.alpha) << v.verdict;
+    if (!v.key.reference) EXPECT_EQ(v.verdict.rfind("differs", 0) == 0, v.min_p < a.alpha) << v.verdict;
 }
 
 // A missing or unreadable reference replica leaves no verdict against it, and no decision that would mark a
@@ -271,6 +334,20 @@ TEST(StudyAnalysis, MissingReferenceGivesNoVerdict) {
     EXPECT_EQ(count(pass_table_markdown(a, "gauss"), "**"), 0u);
     EXPECT_EQ(count(summary_markdown(a), "differs"), 0u);
   }
+}
+
+// A shift of 30 % against a spread of 0.08 % has a P-value far below 1e-12, which no error model of the study
+// supports: every table prints "< 1e-12", none a smaller number or 0.
+TEST(StudyReport, PValuesArePrintedNoSmallerThanTheFloor) {
+  const StudyConfig cfg = parse_config(kConfig, "c.toml");
+  const Analysis a = analyse(cfg, fake_cells(cfg, 0.3));
+  ASSERT_LT(comparison(find(a, "tea32", 1), "temperature_mean").decision.p_adjusted, 1e-12);
+  const std::regex smaller("e-(1[3-9]|[2-9][0-9]|[1-9][0-9][0-9])|p 0\\)| 0 \\|");
+  for (const std::string& table : {observables_markdown(a, "gauss"), summary_markdown(a), zeta_markdown(a)}) {
+    EXPECT_FALSE(std::regex_search(table, smaller)) << table;
+  }
+  EXPECT_NE(observables_markdown(a, "gauss").find("(p < 1e-12)"), std::string::npos);
+  EXPECT_NE(summary_markdown(a).find("| < 1e-12 |"), std::string::npos);
 }
 
 TEST(StudyReport, NistLayoutFollowsTheReference) {

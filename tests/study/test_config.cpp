@@ -109,13 +109,41 @@ TEST(StudyConfig, PaperStudyCoversBothTeaFamiliesAtAllRounds) {
   for (const auto& g : c.generators) EXPECT_EQ(g.rounds, rounds) << g.name;
   EXPECT_EQ(c.distributions, (std::vector<rng::Distribution>{rng::Distribution::gauss, rng::Distribution::uniform}));
   EXPECT_EQ(c.feeds, (std::vector<rng::Feed>{rng::Feed::halves, rng::Feed::blocks, rng::Feed::inverse}));
-  EXPECT_EQ(c.scene.steps, 10000);
+  EXPECT_EQ(c.replicas, 12);
+  EXPECT_EQ(c.scene.steps, 2500);
   EXPECT_EQ(c.scene.equilibrate, 500);
+  EXPECT_EQ(c.tests.margins.at("temperature"), 0.005);
   EXPECT_EQ(c.tests.nist_sequences, 1000);
   EXPECT_EQ(c.tests.nist_bits, 1 << 20);
   std::size_t nist_tea32 = 0;
   for (const auto& cell : enumerate_cells(c)) nist_tea32 += cell.nist && cell.generator == "tea32";
   EXPECT_EQ(nist_tea32, rounds.size());  // every 32TEA variant, once
+}
+
+}  // namespace dpdrng_test::study_test_config
+
+namespace dpdrng_test::study_test_config {
+
+// [tests.margins]: a config without the table takes the documented defaults; a key sets its observable's margin
+// and leaves the hash alone (margins judge cells, they do not make them); an unknown key or a margin that is not
+// positive is an error naming the key.
+TEST(StudyConfig, MarginsDefaultAndNameTheirKey) {
+  const StudyConfig plain = parse_config(kMinimal, "cfg.toml");
+  EXPECT_EQ(plain.tests.margins.at("temperature"), 0.005);
+  EXPECT_EQ(plain.tests.margins.at("pressure"), 0.005);
+  EXPECT_EQ(plain.tests.margins.at("diffusion"), 0.03);
+  EXPECT_EQ(plain.tests.margins.size(), 8u);
+  EXPECT_EQ(plain.tests.margins.at("pressure_components"), 0.005);
+  const StudyConfig set = parse_config(kMinimal + "[tests.margins]\ntemperature = 0.01\n", "cfg.toml");
+  EXPECT_EQ(set.tests.margins.at("temperature"), 0.01);
+  EXPECT_EQ(set.tests.margins.at("pressure"), 0.005);
+  EXPECT_EQ(set.hash, plain.hash);
+  EXPECT_NE(error_of(kMinimal + "[tests.margins]\ntemperatur = 0.01\n").find("tests.margins.temperatur: unknown key"),
+            std::string::npos);
+  for (const char* bad : {"0", "-0.01", "nan", "\"x\""})
+    EXPECT_NE(error_of(kMinimal + "[tests.margins]\npressure = " + bad + "\n").find("tests.margins.pressure"),
+              std::string::npos)
+        << bad;
 }
 
 }  // namespace dpdrng_test::study_test_config

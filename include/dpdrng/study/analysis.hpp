@@ -1,13 +1,24 @@
 #pragma once
 // From stored cells to verdicts: cells that differ only by replica form a variant; every variant is compared
-// with the reference (MT19937) variant of the same distribution and Δt. Every comparison is a test with a
-// P-value on its own scale; the study's error control (Holm over the whole study, or over each variant) turns
-// the P-values into one set of decisions, and every verdict, bold mark and chart of the report reads those.
+// with the reference (MT19937) variant of the same distribution and Δt. Each observable's comparison leads with
+// its effect size, the shift against the reference and its 95 % CI, and ends in one of three outcomes:
+// `equivalent` (two one-sided tests: the shift lies inside ±δ, δ the observable's margin, Holm over the study's
+// equivalence tests), `differs` (two-sided, Holm over one family holding every test of the study: observables,
+// ⟨ζ²⟩ = 1, pass fractions and correlations) or `inconclusive` (neither). Every verdict, bold mark and chart
+// of the report reads those decisions.
+//
+// The error model: a shift's standard error is the replicas' spread (Student t on n + m − 2 degrees of
+// freedom). The runs' own block errors pooled over the replicas understate it: over the 108 null comparisons of
+// the committed studies (tools/z_dispersion.py) their z-scores have a variance of 1.50 [1.16, 1.99] for the
+// pressure and 1.24 [0.97, 1.65] for the temperature, the replicas' spread 1.03 and 1.02; score_dispersion()
+// checks the chosen model on any study.
 #include <cmath>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
 
+#include "dpdrng/stats/equivalence.hpp"
 #include "dpdrng/stats/mean_tests.hpp"
 #include "dpdrng/stats/moments.hpp"
 #include "dpdrng/study/cell_result.hpp"
@@ -42,6 +53,17 @@ struct Decision {
   bool tested() const { return std::isfinite(p); }
 };
 
+// The equivalence test of one observable (stats::equivalence_p at its margin) and the decision on it.
+struct Equivalence {
+  double p = NAN;           // NaN: no margin, or too few replicas (not part of the equivalence family)
+  double p_adjusted = NAN;  // Holm-adjusted over the study's equivalence tests
+  bool equivalent = false;  // p_adjusted < α: the (1 − 2α′) CI of the shift lies inside ±margin
+  bool tested() const { return std::isfinite(p); }
+};
+
+enum class Outcome { none, equivalent, differs, inconclusive };
+const char* to_string(Outcome o);  // "", "equivalent", "differs", "inconclusive"
+
 // One observable of one variant against the reference.
 struct Comparison {
   std::string observable;   // "temperature_mean", "vpdf_vs_mt", ...
@@ -52,9 +74,18 @@ struct Comparison {
   // bilayer's); curves: mean relative deviation of the variant's mean curve from the reference's over the
   // bins tested.
   double error_rate = NAN;
-  // Scalars: the 1σ of error_rate if the variant were the reference, from the pooled variance (both groups'
-  // replica spreads and every run's own standard error). NaN for curves.
+  // Scalars: the 1σ of the relative shift under the error model (the replicas' spread). NaN for curves.
   double sigma = NAN;
+  // The effect: (value − ref)/|ref| for water scalars; for curves the kept bin whose 95 % CI reaches furthest
+  // from 0, its relative difference; (value − ref) for the bilayer's paired scalars. With its 95 % CI.
+  bool relative = true;
+  double shift = NAN, ci_low = NAN, ci_high = NAN;
+  double margin = NAN;  // δ on the shift's scale; NaN: no equivalence test
+  Equivalence equivalence;
+  Outcome outcome = Outcome::none;  // set by the analysis from both decisions
+  // Normal scores of the shift (stats::normal_score), zero-mean unit-variance under the null when the standard
+  // error is right: under the error model used, and over the runs' own block errors pooled (normal).
+  double score = NAN, score_runs = NAN;
   const char* test = "";    // "t", "paired t", "F" (a literal)
   double statistic = NAN;   // t, or F
   double dof = NAN, dof2 = NAN;  // of t; of F: d and d(n + m − 2)
@@ -112,14 +143,17 @@ struct VariantReport {
   double ns_per_number = NAN, step_ms = NAN, rng_share = NAN;
   // ζ of the production steps' pairs inside r_c, the replicas' power sums added (n = 0: fewer than 4 stored).
   stats::MomentsResult zeta;
-  Decision zeta_decision;  // ⟨ζ²⟩ = 1, Holm over every variant with ζ (a family apart from the verdicts')
+  Decision zeta_decision;  // ⟨ζ²⟩ = 1, a member of the study's one family
   // ⟨ζ²⟩ / ⟨ζ²⟩_reference − 1: the shift of k_BT that fluctuation–dissipation predicts (T ∝ σ²⟨ζ²⟩).
   double zeta_predicted_shift = NAN;
   // Why this variant has no verdict against the reference (empty when it has one): its reference replicas
   // are missing, unreadable or failed.
   std::string no_reference;
-  std::string verdict;       // "indistinguishable from MT at this sample size" / "differs (p = …: …)" / ...
-  double min_p = NAN;        // smallest adjusted P-value behind the verdict (NaN: nothing tested)
+  // any test differs → differs; every observable with a margin equivalent → equivalent; else inconclusive.
+  // none: no verdict (the reference, no data, no reference data).
+  Outcome outcome = Outcome::none;
+  std::string verdict;       // the outcome in words with what it rests on, or why there is none
+  double min_p = NAN;        // smallest adjusted two-sided P-value of the variant (NaN: nothing tested)
   std::size_t tests = 0;     // tests behind the verdict (this variant's share of the family)
   std::string min_p_what;
 };
@@ -129,13 +163,33 @@ struct Analysis {
   ErrorControl error_control = ErrorControl::study;
   std::size_t family_size = 0;  // tests in the study's family (study control), or in all families together
   std::size_t families = 0;     // 1 under study control, the variants with a test under variant control
+  std::size_t equivalence_tests = 0;  // the equivalence family (always study-wide)
+  std::map<std::string, double> margins;  // the config's, by margin key
   bool bilayer = false;  // the membrane scene: physics only, absolute differences, paired tests
   std::vector<VariantReport> variants;  // reference variants first, then in sweep order
   const VariantReport* reference_for(const VariantKey& k) const;
   std::string error_control_sentence() const;  // the rule, in words, for the report
+  std::string error_model_sentence() const;    // which standard error the comparisons use
+  std::string equivalence_text() const;        // the equivalence family, in words
 };
 
 Analysis analyse(const StudyConfig& config, const std::vector<CellResult>& cells);
+
+// Variants of generators known to be good, whose comparisons with the reference are null comparisons: the
+// generators the calibration calls good (philox4x32 at 7 rounds or more, threefry2x64 at 13 or more,
+// splitmix64) and TEA at 16 rounds or more (half of the cipher's 32 cycles and more).
+bool known_good(const VariantKey& k);
+
+// The z-score check of the error model: per scalar observable, the dispersion (stats::score_dispersion) of the
+// shifts' normal scores over the non-reference variants `is_null` accepts, under the model used (`chosen`) and
+// over the runs' block errors (`runs`). Variants that share a reference share its noise, so their scores are
+// positively correlated and the interval is narrower than it should be.
+struct ScoreCheck {
+  std::string observable;
+  stats::Dispersion chosen, runs;
+};
+std::vector<ScoreCheck> score_dispersion(const Analysis& a, const std::function<bool(const VariantKey&)>& is_null,
+                                         double confidence = 0.95);
 
 // How small a temperature error the study's own t-tests see: for each variant with a verdict, the relative
 // shift of k_BT that its temperature test (standard error and degrees of freedom as compared) rejects `power`

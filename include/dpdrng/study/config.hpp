@@ -4,6 +4,7 @@
 // scene, and the sizes of the tests. Parsed from TOML and validated completely before anything is written:
 // an unknown key, a NaN or an out-of-range value is an InputError that names the key.
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -61,6 +62,9 @@ struct TestParams {
   std::vector<std::string> nist_generators;  // generators whose cells also get the NIST battery
   std::vector<rng::Distribution> nist_distributions{rng::Distribution::gauss};
   int nist_replicas = 1;      // only the first nist_replicas replicas: the outputs are the generator's either way
+  // [tests.margins]: the equivalence margin δ of each observable (observables.hpp: keys and defaults), a
+  // fraction of the reference's value. Every key is present, at its default unless the config sets it.
+  std::map<std::string, double> margins;
 };
 
 struct CostParams {

@@ -34,6 +34,16 @@ std::string observables_markdown(const Analysis& a, const std::string& distribut
 std::string summary_markdown(const Analysis& a);
 std::string summary_csv(const Analysis& a);
 std::string cost_markdown(const Analysis& a);
+// report/verdicts.csv: one row per variant × observable or test (shift, 95 % CI, margin, corrected P-values,
+// equivalent | differs | inconclusive; shifts as fractions of the reference's value where relative) and one row
+// per variant, observable "all", with its verdict. The reference's variants have none.
+std::string verdicts_csv(const Analysis& a);
+// The verdict table read from the same rows: per variant its verdict and each margin observable's shift [95 % CI].
+std::string verdict_table_markdown(const Analysis& a);
+// The error model's z-score check (score_dispersion) over the variants of known-good generators.
+std::string score_check_markdown(const Analysis& a);
+// What a verdict assumes and how its outcomes are defined, with the margins in force.
+std::string how_to_read_verdicts(const StudyConfig& config, const Analysis& a);
 // Per variant: ⟨ζ²⟩ of the force's numbers with its CI and the temperature shift it predicts, beside the shift
 // measured against MT.
 std::string zeta_markdown(const Analysis& a);
