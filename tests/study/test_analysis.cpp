@@ -300,7 +300,9 @@ TEST(StudyReport, BoldMarksAreTheDecisions) {
   EXPECT_EQ(count(observables_markdown(a, "gauss"), "**") / 2, observables);
   EXPECT_EQ(count(pass_table_markdown(a, "gauss"), "**") / 2, passes);
   for (const auto& v : a.variants)
-    if (!v.key.reference) EXPECT_EQ(v.verdict.rfind("differs", 0) == 0, v.min_p < a.alpha) << v.verdict;
+    if (!v.key.reference) {
+      EXPECT_EQ(v.verdict.rfind("differs", 0) == 0, v.min_p < a.alpha) << v.verdict;
+    }
 }
 
 // A missing or unreadable reference replica leaves no verdict against it, and no decision that would mark a

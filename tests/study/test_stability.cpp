@@ -173,7 +173,9 @@ TEST(StabilityCli, CiStudyReportsEveryCell) {
   // mvv, shardlow and scmvv with MT19937 and 32TEA(1), pnhln with MT19937 only, each at 4 Δt.
   EXPECT_EQ(a.points.size(), (3u * 2u + 1u) * 4u);
   for (const auto& p : a.points)
-    if (p.integrator == "pnhln:10") EXPECT_EQ(p.generator, "mt19937") << p.method();
+    if (p.integrator == "pnhln:10") {
+      EXPECT_EQ(p.generator, "mt19937") << p.method();
+    }
   const std::string csv = read(out / "report" / "stability.csv");
   for (const auto& p : a.points) {
     EXPECT_NE(csv.find(p.method() + "," + p.integrator), std::string::npos) << p.method();
