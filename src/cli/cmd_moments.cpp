@@ -36,6 +36,7 @@ void run_moments(const MomentsArgs& a) {
                      {"second_moment_target", r.second_moment_target},
                      {"second_moment_p", number(r.second_moment_p)},
                      {"alpha", a.in.alpha}};
+    if (!r.out_of_range.empty()) j["out_of_range"] = r.out_of_range;
     if (!r.reason.empty()) {
       j["reason"] = r.reason;
       j["verdict"] = "n/a";
@@ -54,6 +55,7 @@ void run_moments(const MomentsArgs& a) {
             << "  skewness        " << fmt(r.skewness) << "\n"
             << "  excess kurtosis " << fmt(r.kurtosis) << "\n"
             << "  <x^2>           " << fmt(r.second_moment) << "  " << level << " " << ci(r.second_moment_ci) << "\n";
+  if (!r.out_of_range.empty()) std::cout << "  not applicable: " << r.out_of_range << "\n";
   if (!r.reason.empty()) {
     std::cout << "  <x^2> test      n/a: " << r.reason << "\n";
     return;

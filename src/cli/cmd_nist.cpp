@@ -8,6 +8,7 @@
 #include "dpdrng/cli/checked.hpp"
 #include "dpdrng/cli/registry.hpp"
 #include "dpdrng/common/error.hpp"
+#include "dpdrng/common/numbers.hpp"
 #include "dpdrng/stats/nist/report.hpp"
 
 namespace dpdrng::cli {
@@ -137,7 +138,9 @@ std::vector<nist::Test> parse_tests(const std::string& list) {
     const std::size_t end = std::min(list.find(',', start), list.size());
     const std::string name = list.substr(start, end - start);
     const auto t = nist::parse_test(name);
-    if (!t) throw InputError("--tests: unknown test '" + name + "' (e.g. Frequency,Runs or frequency,runs)");
+    if (!t) throw InputError("--tests: unknown test " + quote_input(name) + " (e.g. Frequency,Runs or frequency,runs)");
+    if (std::find(out.begin(), out.end(), *t) != out.end())
+      throw InputError("--tests: " + quote_input(name) + " lists " + std::string(nist::test_name(*t)) + " twice");
     out.push_back(*t);
     start = end + 1;
   }

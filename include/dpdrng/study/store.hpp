@@ -57,8 +57,6 @@ class Store {
 // A cell file's bytes; std::runtime_error("cannot open it") when it cannot be read (the reason an unreadable cell
 // is listed with).
 std::string read_whole_file(const std::filesystem::path& p);
-// Writes `text` to `path` through a temporary file and a rename.
-void write_file_atomically(const std::filesystem::path& path, const std::string& text);
 
 // The directory layout every store shares: dir/cells/, the config's text as dir/<config_file> and its hash in
 // dir/config.hash. Creates it, or checks that an existing one was made with the same hash (InputError if not).
