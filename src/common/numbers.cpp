@@ -199,6 +199,12 @@ double parse_real(std::string_view text, std::string_view what, const RealRange&
 
 namespace dpdrng {
 
+std::string format_g(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", x);
+  return buf;
+}
+
 std::string exact_decimal(double x) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%g", x);

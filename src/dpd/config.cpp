@@ -71,7 +71,7 @@ void WaterConfig::validate() const {
     bad("equilibrate", std::to_string(equilibrate) + " (0 <= equilibrate < steps = " + std::to_string(steps) + ")");
   // Minimum image gives each pair once only if the box is wider than two cut-offs.
   if (!(box_length() > 2 * rc))
-    bad("particles/density", "box length " + exact_decimal(box_length()) + " must exceed 2*rc");
+    bad("particles/density", "box length " + format_g(box_length()) + " must exceed 2*rc");
   check_box_resolves(box_length(), rc, "density");
   check_step_resolves(dt, kT, box_length(), "dt");
   // Linked cells allocate every cell of width r_c, empty or not, and sweep them every step: in a dilute box the

@@ -31,8 +31,8 @@ void DecompConfig::validate() const {
   for (int axis = 0; axis < 3; ++axis)
     if (domains.cut(axis) && L / domains.n[axis] < w.rc)
       throw InputError("domains: " + std::to_string(domains.n[axis]) + " domains along " + "xyz"[axis] +
-                       " make them " + exact_decimal(L / domains.n[axis]) + " wide in a box of " + exact_decimal(L) +
-                       ", narrower than r_c = " + exact_decimal(w.rc) + " (at most " +
+                       " make them " + format_g(L / domains.n[axis]) + " wide in a box of " + format_g(L) +
+                       ", narrower than r_c = " + format_g(w.rc) + " (at most " +
                        std::to_string(static_cast<int>(L / w.rc)) + " per axis)");
   if (chi2_every < 0) throw InputError("chi2_every must not be negative");
   if (ttest_pairs < 0 || ttest_pairs >= w.particles) throw InputError("ttest_pairs must be in 0..particles-1");

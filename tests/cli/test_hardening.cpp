@@ -52,7 +52,9 @@ std::string tiny_study(const std::string& dt = "[0.04]", const std::string& swee
 TEST(BadInput, NistParametersOutsideTheSpecsRanges) {
   const std::string bits = scratch(".bits");
   // 20 313 words: 1.3 Mbit of tea32(8).
-  ASSERT_EQ(run("gen -g tea32 -r 8 --count 20313 --format raw > " + bits).code, 0);
+  const Result gen = run("gen -g tea32 -r 8 --count 20313 --format raw");
+  ASSERT_EQ(gen.code, 0) << gen.err;
+  std::ofstream(bits, std::ios::binary) << gen.out;
   expect_bad("nist overlapping-template --format raw -i " + bits + " --template-length 2", "2.8.7");
   expect_bad("nist overlapping-template --format raw -i " + bits + " --block-length 20", "2.8.7");
   expect_bad("nist non-overlapping-template --format raw -i " + bits + " --template 111111111", "periodic");
@@ -197,7 +199,7 @@ TEST(BadInput, MessagesPrintNumbersAndEchoesReadably) {
   EXPECT_EQ(defect.code, 2);
   EXPECT_EQ(defect.err.find("''"), std::string::npos) << defect.err;
   // The hidden cap of --bins, stated.
-  expect_bad("chi2 --bins 99999999999 -i /dev/null", "2^31 - 1");
+  expect_bad("chi2 --bins 99999999999 -f u64 -i /dev/null", "2^31 - 1");
   // A directory without a study, given as a study config.
   const std::string dir = scratch(".nostudy");
   fs::create_directories(dir);

@@ -53,7 +53,7 @@ std::optional<ParameterProblem> check_recommended(Test t, const Parameters& p) {
       // λ ≈ 2 is the spec's wording; a factor of two either way keeps the classes near the tabulated ones.
       if (!(lambda >= 0.9 && lambda <= 4.0))
         return ParameterProblem{"overlapping_M", p.overlapping_M,
-                                "gives lambda = (M - m + 1) / 2^m = " + exact_decimal(lambda) +
+                                "gives lambda = (M - m + 1) / 2^m = " + format_g(lambda) +
                                     ", outside 0.9..4 (SP800-22 rev1a 2.8.7: lambda ~ 2)"};
       return std::nullopt;
     }
@@ -87,7 +87,7 @@ std::optional<LengthProblem> check_length(Test t, const Parameters& p, std::size
       const double min_pi = min_overlapping_class(p.overlapping_m, p.overlapping_M, p.overlapping_K);
       if (!(static_cast<double>(N) * min_pi > 5))
         return LengthProblem{"N = " + std::to_string(N) + " blocks of M bits give N * min(pi_i) = " +
-                                 exact_decimal(static_cast<double>(N) * min_pi) +
+                                 format_g(static_cast<double>(N) * min_pi) +
                                  ", not above 5 (SP800-22 rev1a 2.8.7)",
                              (static_cast<std::size_t>(5 / min_pi) + 1) * static_cast<std::size_t>(p.overlapping_M)};
       return std::nullopt;
