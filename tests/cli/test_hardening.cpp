@@ -274,7 +274,8 @@ TEST(BadInput, WritesThatFailPartWay) {
   EXPECT_NE(whole.err.find("holds 4 of 4 cells"), std::string::npos) << whole.err;
   // study.h5 (over 12 KiB) cannot be replaced: the old one and every cell stay as they were.
   const std::string before = slurp(out + "/study.h5");
-  for (const std::string args : {"study report " + out + " --no-charts", "study merge " + out}) {
+  const std::vector<std::string> writers = {"study report " + out + " --no-charts", "study merge " + out};
+  for (const std::string& args : writers) {
     const Result r = limited(args);
     EXPECT_EQ(r.code, 1) << args << ": " << r.err;
     EXPECT_NE(r.err.find("write error"), std::string::npos) << args << ": " << r.err;
