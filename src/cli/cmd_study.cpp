@@ -65,8 +65,12 @@ void merge(const std::vector<std::string>& dirs, const std::string& out_dir) {
   }
   out.open_for(config);
   std::size_t copied = 0;
+  std::vector<UnreadableCell> refused;
   for (const auto& d : dirs)
-    if (fs::absolute(d) != fs::absolute(out.dir())) copied += out.merge_from(Store(d));
+    if (fs::absolute(d) != fs::absolute(out.dir())) copied += out.merge_from(Store(d), &refused);
+  for (const auto& u : refused)
+    std::cerr << "[study] warning: " << u.file.string() << " is unreadable (" << u.reason
+              << "): not merged; `study run` computes it again\n";
   const std::size_t stored = out.assemble(config);
   std::cerr << "[study] merged " << copied << " cell files into " << out.dir() << "; " << out.study_file() << " holds "
             << stored << " of " << enumerate_cells(config).size() << " cells\n";

@@ -48,7 +48,8 @@ void RunOptions::add_noise_and_output(CLI::App& app, const Help& help, std::uint
                  "halves), blocks (u1, u2 from two blocks of the pair, 53 bits each) or inverse (one 53-bit uniform\n"
                  "through the inverse normal CDF); uniform noise takes halves only")
       ->capture_default_str();
-  add_integer(app, "--seed", seed, "noise seed (pair-step key, mt19937 seed)");
+  add_integer(app, "--seed", seed,
+              "noise seed (pair-step key; mt19937 is seeded with its two 32-bit halves XORed, lo32 ^ hi32)");
   add_integer(app, "--init-seed", init_seed, "seed of the initial configuration");
   add_threads(app, threads,
               "OpenMP threads (0 = default); results are identical for any count; systems under 1024 beads "

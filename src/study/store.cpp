@@ -230,7 +230,7 @@ std::size_t Store::assemble(const StudyConfig& config) const {
   return n;
 }
 
-std::size_t Store::merge_from(const Store& other) {
+std::size_t Store::merge_from(const Store& other, std::vector<UnreadableCell>* refused) {
   if (other.stored_hash() != stored_hash())
     throw InputError(other.dir().string() + " was made with a different config than " + dir_.string() +
                      " (hash " + other.stored_hash() + " vs " + stored_hash() + ")");
@@ -241,6 +241,15 @@ std::size_t Store::merge_from(const Store& other) {
     if (src.extension() != ".h5" || src.filename().string()[0] == '.') continue;
     const fs::path dst = dir_ / "cells" / src.filename();
     if (fs::exists(dst)) continue;
+    // Only a whole cell of this config, filed under its own id, is copied.
+    try {
+      std::lock_guard lk(h5::lock());
+      const CellResult r = read_cell_file(src, stored_hash());
+      if (r.cell.id() != src.stem().string()) throw std::runtime_error("holds cell " + r.cell.id());
+    } catch (const std::exception& e) {
+      if (refused) refused->push_back({src, e.what()});
+      continue;
+    }
     std::string bytes;
     try {
       bytes = read_whole_file(src);

@@ -235,6 +235,15 @@ TEST(BadInput, CellFileUnderAnotherNameIsRefused) {
   EXPECT_NE(rep.err.find("holds cell mt19937-gauss-dt0.04-rep00"), std::string::npos) << rep.err;
   const Result ls = run("study merge " + out);
   EXPECT_NE(ls.err.find("holds 3 of 4 cells"), std::string::npos) << ls.err;
+  // Merged into another store: not copied, named.
+  const std::string merged = scratch(".merged");
+  const Result m = run("study merge " + out + " --out " + merged);
+  EXPECT_EQ(m.code, 0) << m.err;
+  EXPECT_NE(m.err.find("rep01.h5 is unreadable (holds cell mt19937-gauss-dt0.04-rep00): not merged"),
+            std::string::npos)
+      << m.err;
+  EXPECT_FALSE(fs::exists(merged + "/cells/mt19937-gauss-dt0.04-rep01.h5"));
+  fs::remove_all(merged);
   const Result again = run("study run " + cfg + " --out " + out + " -t 1");
   EXPECT_EQ(again.code, 0);
   EXPECT_NE(again.err.find("1 computed, 3 resumed"), std::string::npos) << again.err;

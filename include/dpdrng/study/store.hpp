@@ -42,8 +42,9 @@ class Store {
   // Writes study.h5 atomically from the cell files present; returns the number of cells in it.
   std::size_t assemble(const StudyConfig& config) const;
 
-  // Copies the cells of `other` that this store lacks; both must hold the same config.
-  std::size_t merge_from(const Store& other);
+  // Copies the cells of `other` that this store lacks; both must hold the same config. A cell file that is
+  // unreadable or filed under another cell's name is not copied (listed in *refused when given).
+  std::size_t merge_from(const Store& other, std::vector<UnreadableCell>* refused = nullptr);
 
   const std::filesystem::path& dir() const { return dir_; }
   std::filesystem::path cell_path(const Cell& cell) const;
