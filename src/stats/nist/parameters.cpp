@@ -1,11 +1,11 @@
 #include "dpdrng/stats/nist/parameters.hpp"
-#include "dpdrng/common/numbers.hpp"
 
 #include <algorithm>
 #include <bit>
 #include <cmath>
 #include <stdexcept>
 
+#include "dpdrng/common/numbers.hpp"
 #include "dpdrng/stats/nist/tests.hpp"
 
 namespace dpdrng::stats::nist {
@@ -15,7 +15,7 @@ namespace {
 // ⌊log2 n⌋ for n >= 1.
 int floor_log2(std::size_t n) { return n == 0 ? -1 : static_cast<int>(std::bit_width(n)) - 1; }
 
-// η of the overlapping test's class probabilities, λ / 2 with λ = (M - m + 1) / 2^m.
+// The overlapping test's expected count of m-bit windows of ones per block, λ = (M - m + 1) / 2^m.
 double overlap_lambda(int m, int M) { return static_cast<double>(M - m + 1) / std::ldexp(1.0, m); }
 
 // Where each test's mathematics holds (the rules beside the tests).
@@ -50,7 +50,8 @@ std::optional<ParameterProblem> check_recommended(Test t, const Parameters& p) {
         return ParameterProblem{"overlapping_m", p.overlapping_m,
                                 "must be 9 or 10 (SP800-22 rev1a 2.8.7: \"NIST recommends m = 9 or m = 10\")"};
       const double lambda = overlap_lambda(p.overlapping_m, p.overlapping_M);
-      // λ ≈ 2 is the spec's wording; a factor of two either way keeps the classes near the tabulated ones.
+      // λ ≈ 2 is the spec's wording; about a factor of two either way is allowed (m = 10 at the reference's
+      // M = 1032 gives λ = 0.999).
       if (!(lambda >= 0.9 && lambda <= 4.0))
         return ParameterProblem{"overlapping_M", p.overlapping_M,
                                 "gives lambda = (M - m + 1) / 2^m = " + format_g(lambda) +

@@ -53,7 +53,7 @@ std::optional<ParameterProblem> check_parameters(Test t, const Parameters& p);
 std::optional<ParameterProblem> check_recommended(Test t, const Parameters& p);
 
 // The length rules of SP800-22 rev1a's x.7 subsections that depend on n, the sequence length: the reason in words
-// when n bits are too few (or too many) for test t with these parameters, nullopt when the rule holds. A result
+// when n bits are too few for test t with these parameters, nullopt when the rule holds. A result
 // that breaks one is "not applicable: <reason>" (run_test applies it).
 struct LengthProblem {
   std::string reason;
