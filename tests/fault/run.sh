@@ -92,7 +92,7 @@ done
 "$bin" gen --count 20000 --format raw >bits.raw || { echo "FAIL: gen without a fault" >&2; exit 1; }
 
 k=0
-for N in 0 700 5000 40000 120000 250000; do
+for N in 0 700 5000 40000 120000 190000 250000; do
   ERR=ENOSPC
   ((k++ % 2)) && ERR=EIO
   # study run from nothing, then resumed without the fault: the cells stored before the fault are kept.
