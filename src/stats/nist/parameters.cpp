@@ -18,9 +18,6 @@ int floor_log2(std::size_t n) { return n == 0 ? -1 : static_cast<int>(std::bit_w
 // The overlapping test's expected count of m-bit windows of ones per block, λ = (M - m + 1) / 2^m.
 double overlap_lambda(int m, int M) { return static_cast<double>(M - m + 1) / std::ldexp(1.0, m); }
 
-// Where each test's mathematics holds (the rules beside the tests).
-std::optional<ParameterProblem> check_mathematics(Test t, const Parameters& p);
-
 }  // namespace
 
 bool is_aperiodic(std::uint32_t t, int m) {
@@ -106,13 +103,11 @@ std::optional<LengthProblem> check_length(Test t, const Parameters& p, std::size
 }
 
 std::optional<ParameterProblem> check_parameters(Test t, const Parameters& p) {
-  if (auto problem = check_mathematics(t, p)) return problem;
+  if (auto problem = check_validity(t, p)) return problem;
   return check_recommended(t, p);
 }
 
-namespace {
-
-std::optional<ParameterProblem> check_mathematics(Test t, const Parameters& p) {
+std::optional<ParameterProblem> check_validity(Test t, const Parameters& p) {
   switch (t) {
     case Test::BlockFrequency: return check_block_frequency(p.block_frequency_M);
     case Test::NonOverlappingTemplate:
@@ -125,8 +120,6 @@ std::optional<ParameterProblem> check_mathematics(Test t, const Parameters& p) {
     default: return std::nullopt;
   }
 }
-
-}  // namespace
 
 void require_valid(const std::optional<ParameterProblem>& problem) {
   if (problem)

@@ -152,6 +152,7 @@ TEST(NistParameters, RecommendedRangesOfSp80022) {
   // 2.8.7: m = 9 or 10, lambda = (M - m + 1) / 2^m ~ 2.
   p.overlapping_m = 2;
   EXPECT_EQ(check_parameters(NistTest::OverlappingTemplate, p)->field, "overlapping_m");
+  EXPECT_FALSE(check_validity(NistTest::OverlappingTemplate, p));  // the mathematics holds; the spec advises against
   p = {};
   p.overlapping_m = 10;
   EXPECT_FALSE(check_recommended(NistTest::OverlappingTemplate, p));  // the reference's M = 1032: lambda ~ 1

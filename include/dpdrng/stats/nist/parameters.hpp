@@ -44,13 +44,15 @@ std::optional<ParameterProblem> check_approximate_entropy(int m);
 std::optional<ParameterProblem> check_serial(int m);
 std::optional<ParameterProblem> check_linear_complexity(int M);
 
-// The rule of test t on the parameters it uses (tests without parameters: always valid): where the test's
-// mathematics holds (the check_* above), then the ranges SP800-22 rev1a recommends in its "Input Size
-// Recommendation" subsections (x.7), outside which the reference distribution is not the statistic's (a test that
-// passes everything or fails everything). The test functions themselves enforce only the first, so that the
-// spec's small worked examples (x.8) still run; the tool checks both before it reads any input.
-std::optional<ParameterProblem> check_parameters(Test t, const Parameters& p);
+// The rules of test t on the parameters it uses (tests without parameters: always valid). check_validity: where
+// the test's mathematics holds (the check_* above; the test functions throw outside it). check_recommended: the
+// ranges SP800-22 rev1a recommends in its "Input Size Recommendation" subsections (x.7), outside which the
+// reference distribution is not the statistic's (a test that passes everything or fails everything); the test
+// functions do not enforce these, so that the spec's small worked examples (x.8) still run. check_parameters:
+// both, what the tool checks before it reads any input.
+std::optional<ParameterProblem> check_validity(Test t, const Parameters& p);
 std::optional<ParameterProblem> check_recommended(Test t, const Parameters& p);
+std::optional<ParameterProblem> check_parameters(Test t, const Parameters& p);
 
 // The length rules of SP800-22 rev1a's x.7 subsections that depend on n, the sequence length: the reason in words
 // when n bits are too few for test t with these parameters, nullopt when the rule holds. A result
