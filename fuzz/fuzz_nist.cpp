@@ -1,6 +1,7 @@
 // The SP800-22 battery on arbitrary short bit strings with parameters drawn from the input around the edges of
-// their rules. A parameter set that check_parameters() accepts must run and give real P-values (or "not
-// applicable" with a reason); one it refuses must make the test throw std::invalid_argument, not run.
+// their rules. A parameter set that check_validity() accepts, inside SP800-22's recommended ranges or not, must run
+// and give real P-values (or "not applicable" with a reason); one it refuses must make the test throw
+// std::invalid_argument, not run.
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -55,13 +56,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const Parameters p = parameters_from(data);
   const BitSequence s = BitSequence::from_bytes({data + kParameterBytes, size - kParameterBytes});
   for (const Test t : all_tests()) {
-    if (check_parameters(t, p)) {
+    // Outside SP800-22's recommended ranges (check_recommended) the tests still run and must still give
+    // probabilities; outside their mathematics (check_validity) they must refuse.
+    if (check_validity(t, p)) {
       try {
         run_test(t, s, p);
       } catch (const std::invalid_argument&) {
         continue;
       }
-      dpdrng::fuzz::fail(std::string(test_name(t)) + " ran with parameters check_parameters() refuses");
+      dpdrng::fuzz::fail(std::string(test_name(t)) + " ran with parameters check_validity() refuses");
     }
     check(run_test(t, s, p));
   }

@@ -1,8 +1,10 @@
 // dpdrng decompose: the decomposition check (does a boundary pair get the same ζ from both domains?), one
 // configuration or a sweep from a TOML file.
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <sstream>
 
 #include "dpdrng/cli/options.hpp"
 #include "dpdrng/cli/checked.hpp"
@@ -59,13 +61,23 @@ void print_human(const study::DecompResult& r) {
   if (!r.has_reference) return;
   print_run("undecomposed run", r.reference);
   const auto& c = r.randomness;
+  std::ostringstream chi2, lag1, cross;
+  if (c.chi2_tests == 0)
+    chi2 << "not applicable: no step sampled (--chi2-every 0 or too few production steps)";
+  else
+    chi2 << c.chi2_pass << " / " << c.chi2_tests << " pass, min p " << c.chi2_min_p;
+  if (c.lag1_tests == 0)
+    lag1 << "not applicable: no pair series tested (--ttest-pairs 0 or too few production steps)";
+  else
+    lag1 << c.lag1_pass << " / " << c.lag1_tests << " pass, max |r| " << c.lag1_max_abs_r;
+  if (!std::isfinite(c.cross_pair_r))
+    cross << "not applicable: no step sampled";
+  else
+    cross << "r = " << c.cross_pair_r << ", p = " << c.cross_pair_p << " (" << c.cross_pair_verdict << ")";
   std::cout << "randomness of the seeding (undecomposed run, word 0)\n"
-            << "  chi2 (one step, all pairs) " << c.chi2_pass << " / " << c.chi2_tests << " pass, min p " << c.chi2_min_p
-            << "\n"
-            << "  lag-1 t-test (pair series) " << c.lag1_pass << " / " << c.lag1_tests << " pass, max |r| "
-            << c.lag1_max_abs_r << "\n"
-            << "  neighbouring pairs         r = " << c.cross_pair_r << ", p = " << c.cross_pair_p << " ("
-            << c.cross_pair_verdict << ")\n"
+            << "  chi2 (one step, all pairs) " << chi2.str() << "\n"
+            << "  lag-1 t-test (pair series) " << lag1.str() << "\n"
+            << "  neighbouring pairs         " << cross.str() << "\n"
             << "  pairs sharing a word       " << c.duplicates_per_step << " / step\n";
 }
 

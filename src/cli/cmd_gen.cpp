@@ -41,6 +41,12 @@ void run_gen(const GenArgs& a) {
   const rng::GeneratorSpec spec = a.gen.spec();
   if (rng::parse_seeding(a.seeding) != rng::Seeding::counter)
     throw InputError("gen writes standalone streams: --seeding must be 'counter' (pair seedings need a DPD run)");
+  // Counter-mode generators hash start+i: past 2^64 - 1 the counter would wrap to 0 and repeat the stream's start.
+  const rng::Family family = rng::find_generator(spec.name).family;
+  if (family != rng::Family::splitmix64 && family != rng::Family::mt19937 && a.count > 0 &&
+      a.start > std::numeric_limits<std::uint64_t>::max() - (a.count - 1))
+    throw InputError("--start " + std::to_string(a.start) + " with --count " + std::to_string(a.count) +
+                     ": the counter would pass 2^64 - 1 and wrap to 0");
   const bool raw = a.format == "raw";
   if (raw && isatty(STDOUT_FILENO)) throw InputError("refusing to write raw binary to a terminal; pipe or redirect it");
   std::signal(SIGPIPE, SIG_IGN);

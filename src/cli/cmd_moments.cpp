@@ -1,4 +1,5 @@
 // dpdrng moments: mean, variance, skewness, kurtosis and ⟨x²⟩ of a stream, with distribution-free intervals.
+#include <cmath>
 #include <memory>
 
 #include "dpdrng/cli/registry.hpp"
@@ -36,6 +37,7 @@ void run_moments(const MomentsArgs& a) {
                      {"second_moment_target", r.second_moment_target},
                      {"second_moment_p", number(r.second_moment_p)},
                      {"alpha", a.in.alpha}};
+    if (!r.out_of_range.empty()) j["out_of_range"] = r.out_of_range;
     if (!r.reason.empty()) {
       j["reason"] = r.reason;
       j["verdict"] = "n/a";
@@ -47,13 +49,18 @@ void run_moments(const MomentsArgs& a) {
   }
   const std::string level = fmt(100 * r.confidence, "%g") + "% CI";
   auto ci = [](const stats::Interval& i) { return "[" + fmt(i.low, "%.6g") + ", " + fmt(i.high, "%.6g") + "]"; };
+  // A figure beyond the double range has no value to print: the line says so, once.
+  auto with_ci = [&](double v, const stats::Interval& i) {
+    return std::isfinite(v) ? fmt(v) + "  " + level + " " + ci(i) : std::string("not applicable (see below)");
+  };
   std::cout << "moments\n"
             << "  n               " << r.n << "\n"
             << "  mean            " << fmt(r.mean) << "  " << level << " " << ci(r.mean_ci) << "\n"
-            << "  variance        " << fmt(r.variance) << "  " << level << " " << ci(r.variance_ci) << "\n"
+            << "  variance        " << with_ci(r.variance, r.variance_ci) << "\n"
             << "  skewness        " << fmt(r.skewness) << "\n"
             << "  excess kurtosis " << fmt(r.kurtosis) << "\n"
-            << "  <x^2>           " << fmt(r.second_moment) << "  " << level << " " << ci(r.second_moment_ci) << "\n";
+            << "  <x^2>           " << with_ci(r.second_moment, r.second_moment_ci) << "\n";
+  if (!r.out_of_range.empty()) std::cout << "  not applicable: " << r.out_of_range << "\n";
   if (!r.reason.empty()) {
     std::cout << "  <x^2> test      n/a: " << r.reason << "\n";
     return;

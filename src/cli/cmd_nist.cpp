@@ -8,6 +8,7 @@
 #include "dpdrng/cli/checked.hpp"
 #include "dpdrng/cli/registry.hpp"
 #include "dpdrng/common/error.hpp"
+#include "dpdrng/common/numbers.hpp"
 #include "dpdrng/stats/nist/report.hpp"
 
 namespace dpdrng::cli {
@@ -76,8 +77,15 @@ std::vector<nist::BitSequence> NistInput::load() const {
 void check_nist_parameters(const std::vector<nist::Test>& tests, const nist::Parameters& p,
                            const std::function<std::string(const std::string& field)>& flag) {
   for (const nist::Test t : tests)
-    if (const auto problem = nist::check_parameters(t, p))
-      throw InputError(flag(problem->field) + " " + std::to_string(problem->value) + ": " + problem->reason);
+    if (const auto problem = nist::check_parameters(t, p)) {
+      // A template as typed: its bits, not their value.
+      std::string value = std::to_string(problem->value);
+      if (problem->field == "non_overlapping_templates" && p.non_overlapping_m >= 1 && p.non_overlapping_m <= 32) {
+        value.clear();
+        for (int k = p.non_overlapping_m - 1; k >= 0; --k) value += (problem->value >> k) & 1 ? '1' : '0';
+      }
+      throw InputError(flag(problem->field) + " " + value + ": " + problem->reason);
+    }
 }
 
 void print_nist(const NistInput& in, const std::vector<std::vector<nist::TestResult>>& results,
@@ -137,7 +145,9 @@ std::vector<nist::Test> parse_tests(const std::string& list) {
     const std::size_t end = std::min(list.find(',', start), list.size());
     const std::string name = list.substr(start, end - start);
     const auto t = nist::parse_test(name);
-    if (!t) throw InputError("--tests: unknown test '" + name + "' (e.g. Frequency,Runs or frequency,runs)");
+    if (!t) throw InputError("--tests: unknown test " + quote_input(name) + " (e.g. Frequency,Runs or frequency,runs)");
+    if (std::find(out.begin(), out.end(), *t) != out.end())
+      throw InputError("--tests: " + quote_input(name) + " lists " + std::string(nist::test_name(*t)) + " twice");
     out.push_back(*t);
     start = end + 1;
   }

@@ -1,4 +1,5 @@
 // dpdrng simulate: one DPD run of a scene (water: the paper's) with human or JSON output.
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -82,8 +83,9 @@ void print_human(const dpd::RunResult& r) {
   auto pm = [na](const dpd::Stat& s) {
     if (na) return std::string("n/a");
     std::ostringstream o;
-    o << std::setprecision(6) << s.mean << " ± " << std::setprecision(2) << s.sem << " (std " << std::setprecision(4)
-      << s.std << ")";
+    o << std::setprecision(6) << s.mean;
+    if (!std::isfinite(s.sem)) return o.str() + " (error not applicable: " + std::to_string(s.n) + " sample(s))";
+    o << " ± " << std::setprecision(2) << s.sem << " (std " << std::setprecision(4) << s.std << ")";
     return o.str();
   };
   auto num = [na](double v) {
@@ -98,7 +100,11 @@ void print_human(const dpd::RunResult& r) {
             << "temperature k_BT       " << pm(r.temperature) << "\n"
             << "pressure               " << pm(r.pressure) << "\n"
             << "pressure (conservative)" << " " << pm(r.pressure_conservative) << "\n"
-            << "diffusion coefficient  " << (na ? "n/a" : num(r.msd.diffusion) + " ± " + num(r.msd.diffusion_sem)) << "\n"
+            << "diffusion coefficient  "
+            << (na                               ? "n/a"
+                : !std::isfinite(r.msd.diffusion) ? "not applicable: " + r.msd.not_applicable
+                                                  : num(r.msd.diffusion) + " ± " + num(r.msd.diffusion_sem))
+            << "\n"
             << "velocity PDF error     "
             << (na ? "n/a"
                    : num(r.velocity_pdf.error_rate_kT_mean) + " (vs MB at k_BT), " +
@@ -136,7 +142,8 @@ void run_simulate(SimulateArgs& a, const CLI::App& sub) {
   if (cfg.integrator == dpd::Integrator::pnhln) check_reference_only(sub, a);
   cfg.series = !a.run.series_dir.empty();
   cfg.validate();
-  if (cfg.series) prepare_output_directory(a.run.series_dir, "--series");
+  if (cfg.series)
+    prepare_output_files(a.run.series_dir, {"series.csv", "velocity_pdf.csv", "msd.csv", "rdf.csv"}, "--series");
   dpd::RunHooks hooks;
   const bool long_run = double(cfg.particles) * double(cfg.steps) > 2e7;
   if (!a.run.quiet && long_run)
@@ -195,6 +202,9 @@ const bool registered = register_command(40, [](CLI::App& root) {
                  "sampling interval of the distributions",
                  "directory for time series, histograms and g(r) (CSV)"});
   sub->callback([a, sub] {
+    // An option that would change nothing is refused rather than silently ignored.
+    if (a->integrator == "shardlow" && sub->count("--lambda") > 0)
+      throw InputError("--lambda: the shardlow integrator has no lambda (it belongs to Groot-Warren's MVV)");
     if (a->scene == "bilayer")
       return simulate_bilayer(*sub, a->cfg, a->run);
     run_simulate(*a, *sub);

@@ -1,4 +1,5 @@
 // dpdrng study run|merge|report|cells|calibrate: thin glue over dpdrng::study.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -64,8 +65,12 @@ void merge(const std::vector<std::string>& dirs, const std::string& out_dir) {
   }
   out.open_for(config);
   std::size_t copied = 0;
+  std::vector<UnreadableCell> refused;
   for (const auto& d : dirs)
-    if (fs::absolute(d) != fs::absolute(out.dir())) copied += out.merge_from(Store(d));
+    if (fs::absolute(d) != fs::absolute(out.dir())) copied += out.merge_from(Store(d), &refused);
+  for (const auto& u : refused)
+    std::cerr << "[study] warning: " << u.file.string() << " is unreadable (" << u.reason
+              << "): not merged; `study run` computes it again\n";
   const std::size_t stored = out.assemble(config);
   std::cerr << "[study] merged " << copied << " cell files into " << out.dir() << "; " << out.study_file() << " holds "
             << stored << " of " << enumerate_cells(config).size() << " cells\n";
@@ -77,13 +82,18 @@ struct CalibrateArgs {
   bool json = false, no_charts = false;
 };
 
-std::vector<double> real_list(const std::string& text, const std::string& what) {
+// "a,b,c" within `range` (the defect's own, so that the flag, not the generator built from it, is blamed); a
+// value listed twice is refused, as in every list.
+std::vector<double> real_list(const std::string& text, const std::string& what, const RealRange& range) {
   std::vector<double> out;
   if (text.empty()) return out;
   std::string_view rest = text;
   for (;;) {
     const std::size_t comma = rest.find(',');
-    out.push_back(parse_real(rest.substr(0, comma), what));
+    const double v = parse_real(rest.substr(0, comma), what, range);
+    if (std::find(out.begin(), out.end(), v) != out.end())
+      throw InputError(what + ": lists " + exact_decimal(v) + " twice");
+    out.push_back(v);
     if (comma == std::string_view::npos) return out;
     rest.remove_prefix(comma + 1);
   }
@@ -105,9 +115,13 @@ void calibrate_cmd(const CalibrateArgs& a) {
   plan.null_studies = a.null_studies;
   plan.power_studies = a.power_studies;
   if (!a.replicas.empty()) plan.replicas = parse_list<int>(a.replicas, "--replicas", {2, 1000});
-  plan.variance = real_list(a.variance, "--variance");
-  plan.lag1 = real_list(a.lag1, "--lag1");
-  plan.mean = real_list(a.mean, "--mean");
+  for (std::size_t i = 0; i < plan.replicas.size(); ++i)
+    if (std::find(plan.replicas.begin(), plan.replicas.begin() + i, plan.replicas[i]) != plan.replicas.begin() + i)
+      throw InputError("--replicas: lists " + std::to_string(plan.replicas[i]) + " twice");
+  // The ranges of defect:variance=E,lag1=R,mean=M (rng/defect.hpp).
+  plan.variance = real_list(a.variance, "--variance", {-1.0, 1e6, true, false});
+  plan.lag1 = real_list(a.lag1, "--lag1", {-0.5, 0.5, false, false});
+  plan.mean = real_list(a.mean, "--mean", {-1e6, 1e6, false, false});
   plan.shard = parse_shard(a.shard);
   const StudyConfig pool = calibration_pool(config, plan);  // every input checked before anything is written
   validate_scene(pool);

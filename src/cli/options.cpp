@@ -13,7 +13,8 @@ void GeneratorOptions::add_to(CLI::App& app) {
   app.add_option("--generator,-g", name, "generator: " + names)->capture_default_str();
   add_integer(app, "--rounds,-r", rounds,
               "round count (omitted: the generator's default; tea32/tea64: 1..64; see `dpdrng list`)", {1, kIntMax});
-  app.add_option("--key", key, "four 32-bit key words k0,k1,k2,k3 (TEA: the paper's 3,4,5,6)")->capture_default_str();
+  key_option = app.add_option("--key", key, "four 32-bit key words k0,k1,k2,k3 (TEA: the paper's 3,4,5,6)")
+                   ->capture_default_str();
 }
 
 rng::GeneratorSpec GeneratorOptions::spec() const {
@@ -23,14 +24,23 @@ rng::GeneratorSpec GeneratorOptions::spec() const {
   const auto words = parse_list<std::uint32_t>(key, "--key");
   if (words.size() != 4) throw InputError("--key needs four words k0,k1,k2,k3");
   for (std::size_t i = 0; i < 4; ++i) s.key[i] = words[i];
-  return rng::validated(s);
+  s = rng::validated(s);
+  if (key_option && key_option->count() > 0) {
+    const rng::Family f = rng::find_generator(s.name).family;
+    const bool keyed = f == rng::Family::tea32 || f == rng::Family::tea64 || f == rng::Family::philox4x32 ||
+                       f == rng::Family::threefry2x64 || f == rng::Family::defect;
+    if (!keyed) throw InputError("--key: " + s.name + " takes no key (the key words would change nothing)");
+  }
+  return s;
 }
 
 void RunOptions::add_noise_and_output(CLI::App& app, const Help& help, std::uint64_t& seed,
                                       std::uint64_t& init_seed, int& threads, int& sample_every) {
   app.add_option("--pairs", pairs, help.pairs)->check(CLI::IsMember({"all", "cells"}))->capture_default_str();
   gen.add_to(app);
-  app.add_option("--seeding", seeding, "distance (the paper) or pair-step")->capture_default_str();
+  seeding_option =
+      app.add_option("--seeding", seeding, "distance (the paper) or pair-step (hash generators only)")
+          ->capture_default_str();
   app.add_option("--distribution", distribution, "gauss (Box-Muller) or uniform (sqrt3(2u-1))")
       ->capture_default_str();
   app.add_option("--feed", feed,
@@ -38,7 +48,8 @@ void RunOptions::add_noise_and_output(CLI::App& app, const Help& help, std::uint
                  "halves), blocks (u1, u2 from two blocks of the pair, 53 bits each) or inverse (one 53-bit uniform\n"
                  "through the inverse normal CDF); uniform noise takes halves only")
       ->capture_default_str();
-  add_integer(app, "--seed", seed, "noise seed (pair-step key, mt19937 seed)");
+  add_integer(app, "--seed", seed,
+              "noise seed (pair-step key; mt19937 is seeded with its two 32-bit halves XORed, lo32 ^ hi32)");
   add_integer(app, "--init-seed", init_seed, "seed of the initial configuration");
   add_threads(app, threads,
               "OpenMP threads (0 = default); results are identical for any count; systems under 1024 beads "

@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <system_error>
 
 #include "dpdrng/common/error.hpp"
@@ -86,12 +87,43 @@ std::string describe(const RealRange& r) {
   return "a finite number";
 }
 
+namespace {
+
+// The length of the well-formed UTF-8 sequence of a non-ASCII character at s[i], 0 if there is none.
+std::size_t utf8_length(std::string_view s, std::size_t i) {
+  const auto b = static_cast<unsigned char>(s[i]);
+  const std::size_t len = b >= 0xc2 && b <= 0xdf ? 2 : b >= 0xe0 && b <= 0xef ? 3 : b >= 0xf0 && b <= 0xf4 ? 4 : 0;
+  if (len == 0 || i + len > s.size()) return 0;
+  for (std::size_t k = 1; k < len; ++k)
+    if ((static_cast<unsigned char>(s[i + k]) & 0xc0) != 0x80) return 0;
+  return len;
+}
+
+}  // namespace
+
 std::string quote_input(std::string_view text) {
   constexpr std::size_t kMax = 24;
-  std::string s = text.size() > kMax ? std::string(text.substr(0, kMax)) + "..." : std::string(text);
-  for (char& c : s)
-    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
-  return "'" + s + "'";
+  const std::string_view head = text.substr(0, kMax);
+  // Control characters, NUL, quotes and bytes that are not UTF-8 are shown as \xNN: a message stays one line of
+  // text, whatever was typed or read.
+  std::string s = "'";
+  for (std::size_t i = 0; i < head.size();) {
+    const auto b = static_cast<unsigned char>(head[i]);
+    if (b >= 0x20 && b < 0x7f && b != '\'' && b != '\\') {
+      s += head[i++];
+      continue;
+    }
+    if (const std::size_t len = b >= 0x80 ? utf8_length(head, i) : 0) {
+      s.append(head.substr(i, len));
+      i += len;
+      continue;
+    }
+    char esc[8];
+    std::snprintf(esc, sizeof esc, "\\x%02x", b);
+    s += esc;
+    ++i;
+  }
+  return s + (text.size() > kMax ? "...'" : "'");
 }
 
 std::string check_integer(std::string_view text, const IntRange& range, std::int64_t& out) {
@@ -161,6 +193,24 @@ double parse_real(std::string_view text, std::string_view what, const RealRange&
   const std::string problem = check_real(text, range, v);
   if (!problem.empty()) throw InputError(std::string(what) + ": " + problem);
   return v;
+}
+
+}  // namespace dpdrng
+
+namespace dpdrng {
+
+std::string format_g(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", x);
+  return buf;
+}
+
+std::string exact_decimal(double x) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%g", x);
+  if (std::strtod(buf, nullptr) == x) return buf;
+  const auto r = std::to_chars(buf, buf + sizeof buf, x);
+  return std::string(buf, r.ptr);
 }
 
 }  // namespace dpdrng

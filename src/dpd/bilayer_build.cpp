@@ -5,6 +5,7 @@
 #include <string>
 
 #include "dpdrng/common/error.hpp"
+#include "dpdrng/common/numbers.hpp"
 #include "dpdrng/dpd/bilayer.hpp"
 #include "validate.hpp"
 
@@ -70,8 +71,8 @@ void BilayerConfig::validate() const {
     bad("particles", std::to_string(particles) + " (at least 15 per lipid, at most 5e7)");
   if (!(head_height(*this) < 0.5 * box[2])) bad("box", "L_z too small for the pre-assembled bilayer");
   if (!(water_gap >= 0) || !(water_gap < 0.5 * box[2]))
-    bad("water_gap", std::to_string(water_gap) + " (0 <= water_gap < L_z/2)");
-  if (!(lambda >= 0 && lambda <= 1)) bad("lambda", std::to_string(lambda) + " (0..1)");
+    bad("water_gap", exact_decimal(water_gap) + " (0 <= water_gap < L_z/2)");
+  if (!(lambda >= 0 && lambda <= 1)) bad("lambda", exact_decimal(lambda) + " (0..1)");
   positive(dt, "dt");
   positive(dt_warmup, "dt_warmup");
   const double longest = std::max({box[0], box[1], box[2]});

@@ -1,4 +1,5 @@
 #include "dpdrng/dpd/config.hpp"
+#include "dpdrng/common/numbers.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -117,14 +118,14 @@ void WaterConfig::validate() const {
   finite(gamma, "gamma");
   if (gamma < 0) bad("gamma", "must not be negative");
   finite(lambda, "lambda");
-  if (lambda < 0 || lambda > 1) bad("lambda", std::to_string(lambda) + " (0..1)");
+  if (lambda < 0 || lambda > 1) bad("lambda", exact_decimal(lambda) + " (0..1)");
   positive(dt, "dt");
   if (steps < 1) bad("steps", std::to_string(steps) + " (at least 1)");
   if (equilibrate < 0 || equilibrate >= steps)
     bad("equilibrate", std::to_string(equilibrate) + " (0 <= equilibrate < steps = " + std::to_string(steps) + ")");
   // Minimum image gives each pair once only if the box is wider than two cut-offs.
   if (!(box_length() > 2 * rc))
-    bad("particles/density", "box length " + std::to_string(box_length()) + " must exceed 2*rc");
+    bad("particles/density", "box length " + format_g(box_length()) + " must exceed 2*rc");
   check_box_resolves(box_length(), rc, "density");
   check_step_resolves(dt, kT, box_length(), "dt");
   // Linked cells allocate every cell of width r_c, empty or not, and sweep them every step: in a dilute box the

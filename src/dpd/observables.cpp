@@ -139,7 +139,11 @@ double slope(const std::vector<double>& x, const std::vector<double>& y, std::si
 Msd MsdRecorder::finish() const {
   Msd out;
   const std::size_t nf = frames_.size();
-  if (nf < 8) return out;
+  if (nf < 8) {
+    out.not_applicable = "fewer than 8 MSD frames (" + std::to_string(nf) + " sampled; a longer run or a smaller "
+                         "--sample-every gives more)";
+    return out;
+  }
   const std::size_t lmax = nf / 2;
   // Every frame up to 400 origins. The beads fall into kStatBlocks groups; leaving one group out at a time
   // gives D a jackknife error, and the MSD curve a jackknife covariance.

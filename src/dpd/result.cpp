@@ -50,13 +50,17 @@ Stat make_stat(const std::vector<double>& x) {
   double v2 = 0;
   for (double v : x) v2 += (v - m) * (v - m);
   s.mean = m;
-  s.std = x.size() > 1 ? std::sqrt(v2 / double(x.size() - 1)) : 0.0;
+  if (x.size() < 2) {
+    s.std = s.sem = s.std_sem = NAN;
+    return s;
+  }
+  s.std = std::sqrt(v2 / double(x.size() - 1));
   constexpr std::size_t kTooShort = 40;
   if (x.size() < kTooShort) {
     // Too short to estimate a correlation time: the errors of independent normal samples.
     s.sem = s.std / std::sqrt(double(x.size()));
     s.sem_dof = double(x.size()) - 1.0;
-    s.std_sem = x.size() > 1 ? s.std / std::sqrt(2.0 * double(x.size() - 1)) : 0.0;
+    s.std_sem = s.std / std::sqrt(2.0 * double(x.size() - 1));
     s.std_sem_dof = s.sem_dof;
     return s;
   }

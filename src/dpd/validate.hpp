@@ -4,6 +4,7 @@
 #include <string>
 
 #include "dpdrng/common/error.hpp"
+#include "dpdrng/common/numbers.hpp"
 
 namespace dpdrng::dpd::validate {
 
@@ -13,7 +14,7 @@ namespace dpdrng::dpd::validate {
 
 // Written as !(v > 0) so that NaN fails too.
 inline void positive(double v, const char* field) {
-  if (!(v > 0) || !std::isfinite(v)) bad(field, std::to_string(v) + " (must be a positive finite number)");
+  if (!(v > 0) || !std::isfinite(v)) bad(field, exact_decimal(v) + " (must be a positive finite number)");
 }
 
 }  // namespace dpdrng::dpd::validate

@@ -140,7 +140,8 @@ RunResult run_water(const WaterConfig& in, const RunHooks& hooks) {
     return f;
   };
 
-  const SceneLimits limits{cfg.steps, cfg.equilibrate, cfg.kT, cfg.max_temperature, cfg.min_distance};
+  const SceneLimits limits{cfg.steps, cfg.equilibrate, cfg.kT, cfg.max_temperature, cfg.min_distance,
+                           cfg.rc};
   const SceneRun run = run_scene(
       s, limits, [&] { return vv.start(s, force); },
       [&](std::int64_t step) {

@@ -22,7 +22,7 @@ double lag1_weight(double rho) {
 }
 
 [[noreturn]] void fail(std::string_view name, const std::string& why) {
-  throw InputError("generator '" + quote_input(name) + "': " + why + "; expected " + defect_syntax());
+  throw InputError("generator " + quote_input(name) + ": " + why + "; expected " + defect_syntax());
 }
 }  // namespace
 
@@ -39,7 +39,7 @@ DefectParams parse_defect(std::string_view name) {
     const std::size_t eq = item.find('=');
     if (eq == std::string_view::npos) fail(name, "'" + std::string(item) + "' is not key=value");
     const std::string_view key = item.substr(0, eq), value = item.substr(eq + 1);
-    const std::string what = "generator '" + quote_input(name) + "': " + std::string(key);
+    const std::string what = "generator " + quote_input(name) + ": " + std::string(key);
     int k = -1;
     if (key == "variance") {
       k = 0, p.variance = parse_real(value, what, {-1.0, 1e6, true, false});

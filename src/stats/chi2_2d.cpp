@@ -1,6 +1,7 @@
 #include "dpdrng/stats/chi2_2d.hpp"
 
 #include "dpdrng/common/error.hpp"
+#include "dpdrng/common/numbers.hpp"
 #include "dpdrng/rng/distribution.hpp"
 #include "dpdrng/stats/chi2.hpp"
 
@@ -9,7 +10,7 @@ namespace dpdrng::stats {
 namespace {
 std::size_t cell(double u, int k, std::size_t index) {
   if (!(u >= 0.0 && u < 1.0))  // written so that NaN fails too
-    throw InputError("chi2d: value " + std::to_string(index) + " is " + std::to_string(u) + ", outside [0,1)");
+    throw InputError("chi2d: value " + std::to_string(index) + " is " + format_g(u) + ", outside [0,1)");
   const auto i = static_cast<std::size_t>(u * k);  // u < 1 keeps u·k below k in round-to-nearest
   return i < static_cast<std::size_t>(k) ? i : static_cast<std::size_t>(k) - 1;
 }

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "dpdrng/common/error.hpp"
+#include "scale.hpp"
 
 namespace dpdrng::stats {
 
@@ -89,13 +90,42 @@ MomentsResult moments_of(const MomentSums& s, double confidence, double target) 
   return r;
 }
 
+namespace {
+
+// A second-order quantity of the scaled values back in the data's units: NaN (with the reason noted once) when it
+// lies outside the range of normal doubles there.
+double unscale2(double scaled, double k, std::string& note) {
+  const double v = scaled / k / k;
+  if (scaled == 0 || std::isnan(scaled) || std::isnormal(v)) return v;
+  if (note.empty())
+    note = std::string("the variance and <x^2> are ") + (std::isinf(v) ? "above" : "below") +
+           " the range of double precision for these values";
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+}  // namespace
+
 MomentsResult moments(std::span<const double> x, double confidence, double target) {
-  MomentSums s;
+  double max_abs = 0;
   for (std::size_t i = 0; i < x.size(); ++i) {
     if (!std::isfinite(x[i])) throw InputError("moments: value " + std::to_string(i) + " is not a finite number");
-    s.add(x[i]);
+    max_abs = std::max(max_abs, std::fabs(x[i]));
   }
-  return moments_of(s, confidence, target);
+  // On values scaled by a power of two (exact) into [0.5, 1): their powers up to the fourth neither overflow nor
+  // underflow, so skewness, kurtosis and the z of the <x^2> test (all scale-free) come out as for values near 1.
+  const double k = detail::unit_scale(max_abs);
+  MomentSums s;
+  for (const double v : x) s.add(v * k);
+  MomentsResult r = moments_of(s, confidence, target * k * k);
+  r.second_moment_target = target;
+  r.mean /= k;
+  r.mean_ci = {r.mean_ci.low / k, r.mean_ci.high / k};
+  r.variance = unscale2(r.variance, k, r.out_of_range);
+  r.variance_ci = {unscale2(r.variance_ci.low, k, r.out_of_range), unscale2(r.variance_ci.high, k, r.out_of_range)};
+  r.second_moment = unscale2(r.second_moment, k, r.out_of_range);
+  r.second_moment_ci = {unscale2(r.second_moment_ci.low, k, r.out_of_range),
+                        unscale2(r.second_moment_ci.high, k, r.out_of_range)};
+  return r;
 }
 
 }  // namespace dpdrng::stats

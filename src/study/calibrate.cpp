@@ -10,6 +10,8 @@
 #include <set>
 
 #include "dpdrng/common/error.hpp"
+#include "dpdrng/common/numbers.hpp"
+#include "dpdrng/common/output.hpp"
 #include "dpdrng/rng/registry.hpp"
 #include "dpdrng/stats/binomial.hpp"
 #include "dpdrng/study/analysis.hpp"
@@ -24,11 +26,8 @@ const std::vector<GeneratorEntry> kGood = {{"philox4x32", {10}, {}}, {"threefry2
 struct Defect {
   std::string kind;
   double size;
-  std::string name() const {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "defect:%s=%.6g", kind.c_str(), size);
-    return buf;
-  }
+  // Exact: two sizes that differ in any bit are two generators (and two cell ids).
+  std::string name() const { return "defect:" + kind + "=" + exact_decimal(size); }
 };
 
 std::vector<Defect> defects_of(const CalibrationPlan& plan) {

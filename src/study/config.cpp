@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
 #include <toml++/toml.h>
 
 #include "dpdrng/common/error.hpp"
+#include "dpdrng/common/numbers.hpp"
 #include "dpdrng/dpd/bilayer.hpp"
 #include "dpdrng/rng/registry.hpp"
 #include "dpdrng/study/observables.hpp"
@@ -18,10 +20,18 @@
 namespace dpdrng::study {
 namespace {
 
+// The one rule for lists: a value given twice is refused, naming it.
+std::string value_text(double x) { return exact_decimal(x); }
+template <class E>
+std::string value_text(E e) {
+  return std::string(rng::to_string(e));
+}
+
 template <class T>
-void check_unique(Section& s, const std::string& key, std::vector<T> v) {
-  std::sort(v.begin(), v.end());
-  if (std::adjacent_find(v.begin(), v.end()) != v.end()) s.fail(key, "lists a value twice");
+void check_unique(Section& s, const std::string& key, const std::vector<T>& v) {
+  for (std::size_t i = 0; i < v.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (v[j] == v[i]) s.fail(key, "lists " + value_text(v[i]) + " twice");
 }
 
 template <class E>
@@ -63,11 +73,10 @@ std::vector<std::string> valid_integrators(Section& s, const std::string& key, s
     } catch (const InputError& e) {
       s.fail(key, e.what());
     }
-  check_unique(s, key, v);
   // Two spellings of one integrator ("scmvv:5" and "scmvv:05") would run the same cells twice.
   for (std::size_t i = 0; i < specs.size(); ++i)
-    for (std::size_t j = i + 1; j < specs.size(); ++j)
-      if (specs[i] == specs[j]) s.fail(key, "lists one integrator twice: " + v[i] + " and " + v[j]);
+    for (std::size_t j = 0; j < i; ++j)
+      if (specs[j] == specs[i]) s.fail(key, "'" + v[j] + "' and '" + v[i] + "' name the same integrator");
   return v;
 }
 
@@ -268,6 +277,7 @@ StudyConfig parse_config(const std::string& toml_text, const std::string& origin
   s.kT = sc.num("kT", s.kT, 0, 1e6, true);
   s.lambda = sc.num("lambda", s.lambda, 0, 1);
   s.dt = sc.numbers("dt", s.dt, 0, 10, true);
+  check_unique(sc, "dt", s.dt);
   if (sc.get("time")) {
     if (bilayer) sc.fail("time", "is for the water scene (the bilayer runs scene.steps)");
     if (sc.get("steps") || sc.get("equilibrate"))
@@ -275,10 +285,10 @@ StudyConfig parse_config(const std::string& toml_text, const std::string& origin
     s.time = sc.num("time", 0, 0, 1e9, true);
     s.equilibrate_time = sc.num("equilibrate_time", 0.05 * s.time, 0, s.time);
     for (double dt : s.dt) {
-      if (s.time / dt > 1e9) sc.fail("time", "gives more than 1e9 steps at dt = " + std::to_string(dt));
-      if (s.steps_at(dt) < 2) sc.fail("time", "gives fewer than 2 steps at dt = " + std::to_string(dt));
+      if (s.time / dt > 1e9) sc.fail("time", "gives more than 1e9 steps at dt = " + exact_decimal(dt));
+      if (s.steps_at(dt) < 2) sc.fail("time", "gives fewer than 2 steps at dt = " + exact_decimal(dt));
       if (s.equilibrate_at(dt) >= s.steps_at(dt))
-        sc.fail("equilibrate_time", "leaves no production step at dt = " + std::to_string(dt));
+        sc.fail("equilibrate_time", "leaves no production step at dt = " + exact_decimal(dt));
     }
   } else {
     if (sc.get("equilibrate_time")) sc.fail("equilibrate_time", "needs scene.time");
@@ -343,11 +353,24 @@ StudyConfig parse_config(const std::string& toml_text, const std::string& origin
   co.finish();
 
   top.finish();
+  // A cell's id names its file and its group in study.h5: two cells under one id would overwrite each other.
+  std::set<std::string> ids;
+  for (const Cell& cell : enumerate_cells(c))
+    if (!ids.insert(cell.id()).second)
+      throw InputError(origin + ": two cells of this config share the id " + cell.id() +
+                       " (sweep entries that differ only in how they are written?)");
   c.hash = fnv1a64_hex(c.canonical().dump());
   return c;
 }
 
 StudyConfig load_config(const std::string& path) {
+  // A directory opens like an empty file: without this it would read as a config that lacks every key.
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(path + ": is a directory, not a study config (TOML)" +
+                     (std::filesystem::exists(std::filesystem::path(path) / "study.toml", ec)
+                          ? std::string("; the study it holds was made with ") + path + "/study.toml"
+                          : std::string("; it holds no study (no study.toml)")));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot read the study config");
   std::ostringstream text;

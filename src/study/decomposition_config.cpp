@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "dpdrng/common/error.hpp"
+#include "dpdrng/common/numbers.hpp"
 #include "dpdrng/rng/seeding_repair.hpp"
 #include "dpdrng/study/config.hpp"
 #include "dpdrng/study/decomposition_sweep.hpp"
@@ -24,6 +25,15 @@ void DecompConfig::validate() const {
   w.validate();
   // Every pair is visited every step (twice): fine for the paper's 256 beads, not for a membrane.
   if (w.particles > 20000) throw InputError("particles: the decomposition check visits all pairs; at most 20000");
+  // A domain narrower than r_c would need ghosts from beyond its neighbours, which a spatial decomposition does
+  // not exchange: the check would emulate no code.
+  const double L = w.box_length();
+  for (int axis = 0; axis < 3; ++axis)
+    if (domains.cut(axis) && L / domains.n[axis] < w.rc)
+      throw InputError("domains: " + std::to_string(domains.n[axis]) + " domains along " + "xyz"[axis] +
+                       " make them " + format_g(L / domains.n[axis]) + " wide in a box of " + format_g(L) +
+                       ", narrower than r_c = " + format_g(w.rc) + " (at most " +
+                       std::to_string(static_cast<int>(L / w.rc)) + " per axis)");
   if (chi2_every < 0) throw InputError("chi2_every must not be negative");
   if (ttest_pairs < 0 || ttest_pairs >= w.particles) throw InputError("ttest_pairs must be in 0..particles-1");
   if (!(alpha > 0 && alpha < 1)) throw InputError("alpha must be in (0, 1)");

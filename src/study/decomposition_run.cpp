@@ -60,14 +60,14 @@ struct Tapper {
       if (r.verdict == stats::Verdict::not_applicable) continue;
       ++c.chi2_tests;
       c.chi2_pass += r.verdict == stats::Verdict::pass;
-      c.chi2_min_p = std::min(c.chi2_min_p, r.p_value);
+      c.chi2_min_p = c.chi2_tests == 1 ? r.p_value : std::min(c.chi2_min_p, r.p_value);
     }
     for (const auto& x : series) {
       const auto r = stats::lag1_ttest(x, cfg.alpha);
       if (r.verdict == stats::Verdict::not_applicable) continue;
       ++c.lag1_tests;
       c.lag1_pass += r.verdict == stats::Verdict::pass;
-      c.lag1_max_abs_r = std::max(c.lag1_max_abs_r, std::fabs(r.r));
+      c.lag1_max_abs_r = c.lag1_tests == 1 ? std::fabs(r.r) : std::max(c.lag1_max_abs_r, std::fabs(r.r));
     }
     if (sampled_steps) {
       const auto m = stats::NoiseMatrix::step_major(step_words, pairs, sampled_steps);

@@ -8,6 +8,7 @@
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/study/config.hpp"
 #include "dpdrng/study/decomposition_sweep.hpp"
+#include "dpdrng/common/output.hpp"
 #include "dpdrng/study/store.hpp"
 
 namespace dpdrng::study {

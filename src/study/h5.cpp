@@ -100,6 +100,33 @@ Handle create_file(const std::string& path, std::size_t userblock) {
   return Handle(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, fcpl.id(), H5P_DEFAULT), H5Fclose, "create " + path);
 }
 
+Handle create_memory_file(std::size_t userblock) {
+  Handle fcpl(H5Pcreate(H5P_FILE_CREATE), H5Pclose, "file creation plist");
+  if (userblock > 0) check(H5Pset_userblock(fcpl.id(), userblock), "set user block");
+  Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "file access plist");
+  check(H5Pset_fapl_core(fapl.id(), std::size_t{1} << 16, 0), "in-memory driver");
+  // The name only identifies the file among those open in this process.
+  static unsigned long serial = 0;
+  const std::string name = "dpdrng-memory-" + std::to_string(++serial) + ".h5";
+  return Handle(H5Fcreate(name.c_str(), H5F_ACC_TRUNC, fcpl.id(), fapl.id()), H5Fclose, "create in memory");
+}
+
+std::string image(hid_t file) {
+  flush(file);
+  const ssize_t n = H5Fget_file_image(file, nullptr, 0);
+  if (n < 0) throw std::runtime_error("HDF5: file image failed");
+  std::string out(static_cast<std::size_t>(n), '\0');
+  if (n > 0 && H5Fget_file_image(file, out.data(), out.size()) != n) throw std::runtime_error("HDF5: file image failed");
+  // HDF5 1.10's image starts at the superblock, leaving the user block out: it is put back (zeros, for the
+  // caller to fill), so that the bytes are those of the file on disk whichever way the library hands them over.
+  Handle fcpl(H5Fget_create_plist(file), H5Pclose, "file creation plist");
+  hsize_t userblock = 0;
+  check(H5Pget_userblock(fcpl.id(), &userblock), "user block size");
+  static constexpr char kSignature[] = "\x89HDF\r\n\x1a\n";
+  if (userblock > 0 && out.compare(0, 8, kSignature, 8) == 0) out.insert(0, static_cast<std::size_t>(userblock), '\0');
+  return out;
+}
+
 Handle open_file(const std::string& path, bool writable) {
   return Handle(H5Fopen(path.c_str(), writable ? H5F_ACC_RDWR : H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose,
                 "open " + path);

@@ -1,8 +1,5 @@
 #include "dpdrng/study/store.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <fstream>
 #include <sstream>
@@ -10,6 +7,7 @@
 #include <string_view>
 
 #include "dpdrng/common/error.hpp"
+#include "dpdrng/common/output.hpp"
 #include "dpdrng/version.hpp"
 
 namespace dpdrng::study {
@@ -22,15 +20,6 @@ std::string read_text(const fs::path& p) {
   std::ostringstream s;
   s << in.rdbuf();
   return s.str();
-}
-
-// Data first, then the rename: after a crash the name points at a complete file or at nothing.
-void sync_file(const fs::path& p) {
-  const int fd = ::open(p.c_str(), O_RDONLY);
-  if (fd < 0) throw OutputError(p.string() + ": cannot open it to sync it");
-  const int rc = ::fsync(fd);
-  ::close(fd);
-  if (rc != 0) throw OutputError(p.string() + ": fsync failed");
 }
 
 // The cell files present (hidden temporaries left by a killed run excluded), in name order.
@@ -58,12 +47,11 @@ std::string seal_of(std::string_view payload) {
   return seal;
 }
 
-void seal_file(const fs::path& p) {
-  const std::string bytes = read_whole_file(p);
-  if (bytes.size() <= kSealBytes) throw OutputError(p.string() + ": HDF5 wrote no data after the checksum block");
-  std::fstream f(p, std::ios::binary | std::ios::in | std::ios::out);
-  f.write(seal_of(std::string_view(bytes).substr(kSealBytes)).data(), static_cast<std::streamsize>(kSealBytes));
-  if (!f.flush()) throw OutputError(p.string() + ": cannot write its checksum block");
+// Fills the image's block with the checksum of the rest.
+void seal_image(std::string& bytes) {
+  if (bytes.size() <= kSealBytes) throw std::runtime_error("HDF5 wrote no data after the checksum block");
+  const std::string seal = seal_of(std::string_view(bytes).substr(kSealBytes));
+  bytes.replace(0, kSealBytes, seal);
 }
 
 // Throws with the reason when the file's bytes do not match its checksum block.
@@ -93,15 +81,6 @@ CellResult read_cell_file(const fs::path& p, const std::string& hash) {
   return read_cell(g.id());
 }
 
-fs::path temp_name(const fs::path& p) {
-  // Appended piecewise: GCC 12 warns (-Wrestrict, a false positive) on the chained operator+ form.
-  std::string name = ".";
-  name += p.filename().string();
-  name += ".tmp";
-  name += std::to_string(::getpid());
-  return p.parent_path() / name;
-}
-
 }  // namespace
 
 std::string read_whole_file(const fs::path& p) {
@@ -110,17 +89,6 @@ std::string read_whole_file(const fs::path& p) {
   std::ostringstream s;
   s << in.rdbuf();
   return s.str();
-}
-
-void write_file_atomically(const fs::path& path, const std::string& text) {
-  const fs::path tmp = temp_name(path);
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out << text;
-    if (!out.flush()) throw OutputError(tmp.string() + ": cannot write it");
-  }
-  sync_file(tmp);
-  fs::rename(tmp, path);
 }
 
 fs::path Store::cell_path(const Cell& cell) const { return dir_ / "cells" / (cell.id() + ".h5"); }
@@ -180,25 +148,22 @@ Store::State Store::state(const Cell& cell, std::string* reason) const {
 
 void Store::save(const CellResult& r) {
   const fs::path p = cell_path(r.cell);
-  const fs::path tmp = temp_name(p);
+  std::string bytes;
   try {
-    {
-      std::lock_guard lk(h5::lock());
-      h5::Handle f = h5::create_file(tmp.string(), kSealBytes);
-      h5::write_attribute(f.id(), "config_hash", stored_hash());
-      h5::Handle g = h5::create_group(f.id(), "cell");
-      write_cell(g.id(), r);
-    }
-    seal_file(tmp);
-    sync_file(tmp);
-    fs::rename(tmp, p);
-  } catch (const std::exception& e) {
-    std::error_code ec;
-    fs::remove(tmp, ec);  // a half-written temporary is no use to anyone
+    std::lock_guard lk(h5::lock());
+    h5::Handle f = h5::create_memory_file(kSealBytes);
+    h5::write_attribute(f.id(), "config_hash", stored_hash());
+    h5::Handle g = h5::create_group(f.id(), "cell");
+    write_cell(g.id(), r);
+    bytes = h5::image(f.id());
+    seal_image(bytes);
+  } catch (const std::invalid_argument&) {
+    throw;
+  } catch (const std::runtime_error& e) {
     if (dynamic_cast<const OutputError*>(&e)) throw;
-    if (dynamic_cast<const std::invalid_argument*>(&e)) throw;
     throw OutputError(p.string() + ": " + e.what());
   }
+  write_file_atomically(p, bytes);
 }
 
 CellResult Store::load(const Cell& cell) const {
@@ -228,12 +193,11 @@ std::vector<CellResult> Store::load_all(std::vector<UnreadableCell>* unreadable)
 
 std::size_t Store::assemble(const StudyConfig& config) const {
   const std::vector<fs::path> files = cell_files(dir_);
-  const fs::path out = study_file();
-  const fs::path tmp = dir_ / ("study.h5.tmp" + std::to_string(::getpid()));
   std::size_t n = 0;
+  std::string bytes;
   {
     std::lock_guard lk(h5::lock());
-    h5::Handle dst = h5::create_file(tmp.string());
+    h5::Handle dst = h5::create_memory_file();
     h5::write_attribute(dst.id(), "study", config.name);
     h5::write_attribute(dst.id(), "description", config.description);
     h5::write_attribute(dst.id(), "config_toml", config.source_text);
@@ -243,11 +207,16 @@ std::size_t Store::assemble(const StudyConfig& config) const {
     h5::Handle cells = h5::create_group(dst.id(), "cells");
     for (const auto& p : files) {
       try {
+        // Only a whole cell of this config, filed under its own id, is part of the store.
         check_seal(p);
         h5::Handle src = h5::open_file(p.string());
         const auto attrs = h5::read_attributes(src.id());
         auto it = attrs.find("config_hash");
         if (it == attrs.end() || std::get<std::string>(it->second) != config.hash) continue;
+        {
+          h5::Handle g = h5::open_group(src.id(), "cell");
+          if (read_cell(g.id()).cell.id() != p.stem().string()) continue;
+        }
         h5::copy(src.id(), "cell", cells.id(), p.stem().string());
         ++n;
       } catch (const std::exception&) {
@@ -255,13 +224,13 @@ std::size_t Store::assemble(const StudyConfig& config) const {
       }
     }
     h5::write_attribute(dst.id(), "cells_stored", static_cast<std::int64_t>(n));
+    bytes = h5::image(dst.id());
   }
-  sync_file(tmp);
-  fs::rename(tmp, out);
+  write_file_atomically(study_file(), bytes);
   return n;
 }
 
-std::size_t Store::merge_from(const Store& other) {
+std::size_t Store::merge_from(const Store& other, std::vector<UnreadableCell>* refused) {
   if (other.stored_hash() != stored_hash())
     throw InputError(other.dir().string() + " was made with a different config than " + dir_.string() +
                      " (hash " + other.stored_hash() + " vs " + stored_hash() + ")");
@@ -272,10 +241,22 @@ std::size_t Store::merge_from(const Store& other) {
     if (src.extension() != ".h5" || src.filename().string()[0] == '.') continue;
     const fs::path dst = dir_ / "cells" / src.filename();
     if (fs::exists(dst)) continue;
-    const fs::path tmp = temp_name(dst);
-    fs::copy_file(src, tmp, fs::copy_options::overwrite_existing);
-    sync_file(tmp);
-    fs::rename(tmp, dst);
+    // Only a whole cell of this config, filed under its own id, is copied.
+    try {
+      std::lock_guard lk(h5::lock());
+      const CellResult r = read_cell_file(src, stored_hash());
+      if (r.cell.id() != src.stem().string()) throw std::runtime_error("holds cell " + r.cell.id());
+    } catch (const std::exception& e) {
+      if (refused) refused->push_back({src, e.what()});
+      continue;
+    }
+    std::string bytes;
+    try {
+      bytes = read_whole_file(src);
+    } catch (const std::exception& e) {
+      throw InputError(src.string() + ": " + e.what());
+    }
+    write_file_atomically(dst, bytes);
     ++n;
   }
   return n;

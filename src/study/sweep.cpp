@@ -54,9 +54,8 @@ IntegratorSpec integrator_of(const std::string& name, const SceneParams& scene) 
 std::string Cell::id() const {
   char buf[200];
   const std::string n = noise();
-  char dt_buf[40];
-  std::snprintf(dt_buf, sizeof dt_buf, "dt%g", dt);
-  std::string dt_part = dt_buf;
+  // Exact: two Δt that differ in any bit get two ids (the %g form where that is exact, so stores keep names).
+  std::string dt_part = "dt" + exact_decimal(dt);
   if (!integrator.empty()) {
     std::string tag = integrator;
     tag.erase(std::remove(tag.begin(), tag.end(), ':'), tag.end());

@@ -121,9 +121,10 @@ TEST(CliSimulate, TinyWaterRunGivesTheIssuesJson) {
   EXPECT_EQ(j.at("status"), "ok");
   EXPECT_EQ(j.at("integrator"), "mvv");
   EXPECT_EQ(j.at("steps_done"), 20);
-  for (const char* k : {"temperature_mean", "temperature_std", "pressure_mean", "pressure_conservative_mean",
-                        "diffusion_coefficient"})
+  for (const char* k : {"temperature_mean", "temperature_std", "pressure_mean", "pressure_conservative_mean"})
     EXPECT_TRUE(j.at(k).is_number()) << k;
+  // 10 production steps leave fewer than 8 MSD frames: no diffusion coefficient (null), not 0.
+  EXPECT_TRUE(j.at("diffusion_coefficient").is_null()) << j.at("diffusion_coefficient");
   EXPECT_GT(j.at("temperature_mean").get<double>(), 0.5);  // k_BT = 1 fluid, 10 samples
   EXPECT_LT(j.at("temperature_mean").get<double>(), 2.0);
   const std::set<std::string> want = {

@@ -1,7 +1,11 @@
 // The one parser for numbers typed by a user: decimal only, nothing clamped or wrapped, ranges in words.
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <cmath>
 #include <cstdint>
+#include <cstdlib>
+#include <random>
 #include <limits>
 #include <string>
 
@@ -72,6 +76,32 @@ TEST(Numbers, RealsAreFiniteAndInRange) {
   EXPECT_NE(error_of([&] { parse_real("0", "--alpha", open01); }), "");
   EXPECT_EQ(describe(RealRange{0, std::numeric_limits<double>::infinity(), true, false}), "a number > 0");
   EXPECT_EQ(describe(RealRange{}), "a finite number");
+}
+
+TEST(Numbers, ExactDecimalKeepsPrintfWhereExactAndRoundTripsEverywhere) {
+  // %g where it reads back as the same double: the names stores already carry.
+  EXPECT_EQ(exact_decimal(0.04), "0.04");
+  EXPECT_EQ(exact_decimal(0.01), "0.01");
+  EXPECT_EQ(exact_decimal(1e-5), "1e-05");
+  EXPECT_EQ(exact_decimal(-1e-300), "-1e-300");
+  EXPECT_EQ(exact_decimal(1e308), "1e+308");
+  // Where %g's 6 digits lose bits: the shortest decimal that reads back (Steele & White / Ryu's definition).
+  EXPECT_EQ(exact_decimal(0.0400000001), "0.0400000001");
+  EXPECT_EQ(exact_decimal(0.1 + 0.2), "0.30000000000000004");
+  std::mt19937_64 g(3);
+  for (int i = 0; i < 10000; ++i) {
+    const double x = std::bit_cast<double>(g());
+    if (!std::isfinite(x)) continue;
+    EXPECT_EQ(std::strtod(exact_decimal(x).c_str(), nullptr), x) << exact_decimal(x);
+  }
+}
+
+TEST(Numbers, QuotedInputIsOneLineOfText) {
+  EXPECT_EQ(quote_input("runs"), "'runs'");
+  EXPECT_EQ(quote_input(std::string("a\0b\x01\xff", 5)), "'a\\x00b\\x01\\xff'");
+  EXPECT_EQ(quote_input("it's"), "'it\\x27s'");
+  EXPECT_EQ(quote_input("\xce\xbb=0.5"), "'\xce\xbb=0.5'");  // UTF-8 (lambda) is kept
+  EXPECT_EQ(quote_input(std::string(30, 'x')), "'" + std::string(24, 'x') + "...'");
 }
 
 }  // namespace dpdrng_test::common_test_numbers

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "dpdrng/cli/checked.hpp"
+#include "dpdrng/common/error.hpp"
 #include "dpdrng/dpd/config.hpp"
 #include "dpdrng/rng/registry.hpp"
 
@@ -13,9 +14,11 @@ struct GeneratorOptions {
   std::string name = "tea32";
   int rounds = 0;
   std::string key = "3,4,5,6";
+  CLI::Option* key_option = nullptr;  // set by add_to: whether --key was given
 
   void add_to(CLI::App& app);
-  rng::GeneratorSpec spec() const;  // validated; throws InputError
+  // Validated; throws InputError, also for a --key given to a generator that has none.
+  rng::GeneratorSpec spec() const;
 };
 
 // What `simulate` and `simulate-bilayer` both take besides the scene's physics.
@@ -24,6 +27,7 @@ struct RunOptions {
   std::string pairs, seeding = "distance", distribution = "gauss", feed = "halves";
   bool json = false, quiet = false;
   std::string series_dir;
+  CLI::Option* seeding_option = nullptr;  // set by add_to: whether --seeding was given
 
   explicit RunOptions(std::string default_pairs) : pairs(std::move(default_pairs)) {}
   // Help texts that differ between the scenes.
@@ -33,10 +37,14 @@ struct RunOptions {
   // Noise, pair search, seeds, threads, sampling and output; binds the fields both scene configs name alike.
   template <class Config>
   void add_to(CLI::App& app, Config& c, const Help& help);
-  // Fills the config's generator, pair mode, seeding, distribution and feed; throws InputError.
+  // Fills the config's generator, pair mode, seeding, distribution and feed; throws InputError, also for a
+  // --seeding given to a stream generator (which draws in a fixed pair order and has no pair seeding).
   template <class Config>
   void apply(Config& c) const {
     c.generator = gen.spec();
+    if (seeding_option && seeding_option->count() > 0 && !rng::find_generator(c.generator.name).keyed_hash)
+      throw InputError("--seeding: " + c.generator.name +
+                       " is a stream drawn in a fixed pair order; it has no pair seeding to choose");
     c.pairs = dpd::parse_pair_mode(pairs);
     c.seeding = rng::parse_seeding(seeding);
     c.distribution = rng::parse_distribution(distribution);

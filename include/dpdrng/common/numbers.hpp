@@ -28,8 +28,14 @@ struct RealRange {
 std::string describe(const IntRange& r);   // "an integer from 1 to 2^64 - 1"
 std::string describe(const RealRange& r);  // "a number within (0, 1)", "a number > 0", "a finite number"
 
+// A real as the names of files and ids carry it: printf's %g where that reads back as the same double (0.04,
+// 1e-05), otherwise the shortest decimal that does (0.0400000001), so two different values never share a name.
+std::string exact_decimal(double x);
+// A computed number in a message: printf's %g (6 significant digits; never %f's "-0.000000" or 310 digits).
+std::string format_g(double x);
+
 // The text, shortened for a message (a pasted megabyte stays a line).
-std::string quote_input(std::string_view text);
+std::string quote_input(std::string_view text);  // control bytes, quotes and non-UTF-8 as \xNN
 
 // On success writes the value and returns ""; otherwise returns the problem and leaves the output alone.
 std::string check_integer(std::string_view text, const IntRange& range, std::int64_t& out);

@@ -1,4 +1,5 @@
 #pragma once
+#include <cmath>
 // What a DPD run returns: status, observables (means with spread and block-average standard errors),
 // distributions, timings and the taps for the statistical tests. A run that blows up is data, not a crash:
 // status says "unstable at step k: reason" and the observables cover the steps done.
@@ -18,6 +19,7 @@ namespace dpdrng::dpd {
 // of D: each such error carries kStatBlocks − 1 degrees of freedom.
 inline constexpr std::size_t kStatBlocks = 20;
 
+// With fewer than 2 samples std and the standard errors are NaN: not computable, never 0.
 struct Stat {
   double mean = 0, std = 0;
   double sem = 0;      // standard error of the mean of correlated samples, from their integrated autocorrelation time
@@ -46,8 +48,9 @@ struct VelocityPdf {
 struct Msd {
   std::vector<double> tau, msd;  // msd(τ) averaged over particles and time origins
   double fit_from = 0, fit_to = 0;
-  double diffusion = 0;          // slope / 6 of a least-squares line over [fit_from, fit_to]
-  double diffusion_sem = 0;      // jackknife over kStatBlocks groups of beads (0 with fewer than 2 beads)
+  double diffusion = NAN;        // slope / 6 of a least-squares line over [fit_from, fit_to]; NaN: not_applicable
+  double diffusion_sem = NAN;    // jackknife over kStatBlocks groups of beads (NaN with fewer than 2 beads)
+  std::string not_applicable;    // why there is no diffusion coefficient
   double diffusion_sem_dof = 0;  // groups − 1
   std::vector<std::vector<double>> jackknife;  // msd with one group of beads left out, per group
 };

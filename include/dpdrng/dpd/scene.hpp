@@ -33,6 +33,7 @@ inline double seconds_between(SceneClock::time_point a, SceneClock::time_point b
 struct SceneLimits {
   std::int64_t steps = 0, equilibrate = 0;
   double kT = 1.0, max_temperature = 100.0, min_distance = 1e-5;
+  double rc = 1.0;  // the pair loop's cut-off: pairs beyond it are not seen by the min_distance guard
 };
 
 // What the loop computes at the end of every step, for the guards and the observers.

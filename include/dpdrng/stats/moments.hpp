@@ -42,6 +42,9 @@ struct MomentsResult {
   double second_moment_target = 1;
   double second_moment_p = 1;
   std::string reason;  // why the intervals are NaN (fewer than 4 values); empty otherwise
+  // moments() of values so large or small that the variance or <x^2> (or their interval ends) cannot be held in
+  // a double: those are NaN, and this says why; the test of <x^2> still holds (computed on scaled values).
+  std::string out_of_range;
 };
 
 MomentsResult moments_of(const MomentSums& s, double confidence = 0.95, double second_moment_target = 1.0);

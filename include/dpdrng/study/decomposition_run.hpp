@@ -12,6 +12,7 @@
 //   c.noise.generator = rng::validated({"tea32", 1});
 //   c.noise.seeding = dpd::parse_decomp_seeding("grid:32");
 //   study::DecompResult r = study::run_decomposition(c);
+#include <cmath>
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -49,17 +50,18 @@ struct DecompRun {
   double seconds = 0;
 };
 
-// What the seeding costs in randomness, measured on the reference run's raw words (word 0 → [0,1)).
+// What the seeding costs in randomness, measured on the reference run's raw words (word 0 → [0,1)). A figure
+// over no test (--chi2-every 0, --ttest-pairs 0) is NaN, "not applicable" (null in JSON), never 0 or 1.
 struct RandomnessCost {
   std::size_t chi2_tests = 0, chi2_pass = 0;  // one step's N(N−1)/2 words each, Sturges bins, α
-  double chi2_min_p = 1;
+  double chi2_min_p = NAN;
   std::size_t lag1_tests = 0, lag1_pass = 0;  // one pair's production-step series each
-  double lag1_max_abs_r = 0;
-  double cross_pair_r = 0, cross_pair_p = 1;  // pair slot p vs p+1 at the same step, pooled
+  double lag1_max_abs_r = NAN;
+  double cross_pair_r = NAN, cross_pair_p = NAN;  // pair slot p vs p+1 at the same step, pooled
   std::string cross_pair_verdict = "n/a";
   double duplicates_per_step = 0;             // pairs whose word equals another pair's word at the same step
-  double chi2_pass_fraction() const { return chi2_tests ? double(chi2_pass) / chi2_tests : 0; }
-  double lag1_pass_fraction() const { return lag1_tests ? double(lag1_pass) / lag1_tests : 0; }
+  double chi2_pass_fraction() const { return chi2_tests ? double(chi2_pass) / chi2_tests : NAN; }
+  double lag1_pass_fraction() const { return lag1_tests ? double(lag1_pass) / lag1_tests : NAN; }
 };
 
 struct DecompResult {

@@ -43,6 +43,14 @@ struct Matrix {
   std::vector<double> data;  // row-major
 };
 
+// A file held in memory (HDF5's core driver, no backing store): HDF5 writes nothing to disk, so a full disk can
+// never fail one of its calls half-way and leave the library with a file it cannot close. Every file the store
+// writes is built this way, and image() hands its bytes to the one checked writer (write_file_atomically).
+// A user block (0, or a power of two >= 512) is space before the HDF5 data that HDF5 leaves alone.
+Handle create_memory_file(std::size_t userblock = 0);
+// The whole file as it would be on disk, user block included (flushed first).
+std::string image(hid_t file);
+
 // Truncates. A user block (0, or a power of two >= 512) is space before the HDF5 data that HDF5 leaves alone.
 Handle create_file(const std::string& path, std::size_t userblock = 0);
 Handle open_file(const std::string& path, bool writable = false);

@@ -42,8 +42,9 @@ class Store {
   // Writes study.h5 atomically from the cell files present; returns the number of cells in it.
   std::size_t assemble(const StudyConfig& config) const;
 
-  // Copies the cells of `other` that this store lacks; both must hold the same config.
-  std::size_t merge_from(const Store& other);
+  // Copies the cells of `other` that this store lacks; both must hold the same config. A cell file that is
+  // unreadable or filed under another cell's name is not copied (listed in *refused when given).
+  std::size_t merge_from(const Store& other, std::vector<UnreadableCell>* refused = nullptr);
 
   const std::filesystem::path& dir() const { return dir_; }
   std::filesystem::path cell_path(const Cell& cell) const;
@@ -57,8 +58,6 @@ class Store {
 // A cell file's bytes; std::runtime_error("cannot open it") when it cannot be read (the reason an unreadable cell
 // is listed with).
 std::string read_whole_file(const std::filesystem::path& p);
-// Writes `text` to `path` through a temporary file and a rename.
-void write_file_atomically(const std::filesystem::path& path, const std::string& text);
 
 // The directory layout every store shares: dir/cells/, the config's text as dir/<config_file> and its hash in
 // dir/config.hash. Creates it, or checks that an existing one was made with the same hash (InputError if not).

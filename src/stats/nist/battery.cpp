@@ -17,7 +17,9 @@ std::vector<Test> all_tests() {
   return t;
 }
 
-TestResult run_test(Test t, const BitSequence& s, const Parameters& p) {
+namespace {
+
+TestResult dispatch(Test t, const BitSequence& s, const Parameters& p) {
   switch (t) {
     case Test::Frequency: return frequency(s);
     case Test::BlockFrequency: return block_frequency(s, p.block_frequency_M);
@@ -37,6 +39,16 @@ TestResult run_test(Test t, const BitSequence& s, const Parameters& p) {
     case Test::LinearComplexity: return linear_complexity(s, p.linear_complexity_M);
   }
   throw std::logic_error("unknown SP800-22 test");
+}
+
+}  // namespace
+
+TestResult run_test(Test t, const BitSequence& s, const Parameters& p) {
+  TestResult r = dispatch(t, s, p);
+  // Outside SP800-22's length rules the statistic does not follow its reference distribution: no P-value.
+  if (r.applicable)
+    if (const auto why = check_length(t, p, s.size())) detail::not_applicable(r, why->reason, why->min_bits);
+  return r;
 }
 
 std::vector<TestResult> run_battery(const BitSequence& s, const Parameters& p, std::span<const Test> tests) {

@@ -218,6 +218,11 @@ std::size_t runs_of_ones(const BitSequence& s, std::size_t base, std::size_t M, 
 
 }  // namespace
 
+double min_overlapping_class(int m, int M, int K) {
+  const std::vector<double> pi = overlap_classes(K, overlap_eta(m, M));
+  return *std::min_element(pi.begin(), pi.end());
+}
+
 std::optional<ParameterProblem> check_overlapping(int m, int M, int K) {
   if (m < 1 || m > 32) return ParameterProblem{"overlapping_m", m, "must be within 1..32"};
   if (M < m) return ParameterProblem{"overlapping_M", M, "must be at least m = " + std::to_string(m)};

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "dpdrng/stats/nist/battery.hpp"
+#include "dpdrng/stats/nist/parameters.hpp"
 #include "dpdrng/stats/nist/tests.hpp"
 
 namespace dpdrng_test::stats_nist_test_nist_parameters {
@@ -130,6 +131,76 @@ TEST(NistParameters, CheckParametersNamesTheFieldOfEveryTest) {
   p = {};
   p.overlapping_K = 0;
   EXPECT_EQ(check_parameters(NistTest::OverlappingTemplate, p)->field, "overlapping_K");
+}
+
+TEST(NistParameters, AperiodicTemplatesAsCountedBySp80022) {
+  // SP800-22 rev1a 2.7.7 / Appendix: 148 aperiodic templates of length 9, 284 of length 10 (and the sts-2.1.2
+  // template files hold as many lines).
+  for (const auto& [m, expected] : {std::pair{2, 2}, {9, 148}, {10, 284}}) {
+    int count = 0;
+    for (std::uint32_t t = 0; t < (1u << m); ++t) count += is_aperiodic(t, m);
+    EXPECT_EQ(count, expected) << "m = " << m;
+  }
+  EXPECT_TRUE(is_aperiodic(0b000000001, 9));   // the reference's first template
+  EXPECT_FALSE(is_aperiodic(0b111111111, 9));  // periodic: p = 0 for every random sequence
+  EXPECT_FALSE(is_aperiodic(0b101, 3));
+}
+
+TEST(NistParameters, RecommendedRangesOfSp80022) {
+  Parameters p;
+  for (const NistTest t : all_tests()) EXPECT_FALSE(check_recommended(t, p)) << test_name(t);
+  // 2.8.7: m = 9 or 10, lambda = (M - m + 1) / 2^m ~ 2.
+  p.overlapping_m = 2;
+  EXPECT_EQ(check_parameters(NistTest::OverlappingTemplate, p)->field, "overlapping_m");
+  EXPECT_FALSE(check_validity(NistTest::OverlappingTemplate, p));  // the mathematics holds; the spec advises against
+  p = {};
+  p.overlapping_m = 10;
+  EXPECT_FALSE(check_recommended(NistTest::OverlappingTemplate, p));  // the reference's M = 1032: lambda ~ 1
+  p = {};
+  p.overlapping_M = 20;
+  EXPECT_EQ(check_parameters(NistTest::OverlappingTemplate, p)->field, "overlapping_M");
+  // 2.2.7: M >= 20; 2.10.7: 500 <= M <= 5000.
+  p = {};
+  p.block_frequency_M = 19;
+  EXPECT_TRUE(check_recommended(NistTest::BlockFrequency, p));
+  p.block_frequency_M = 20;
+  EXPECT_FALSE(check_recommended(NistTest::BlockFrequency, p));
+  p = {};
+  for (const int M : {499, 5001}) {
+    p.linear_complexity_M = M;
+    EXPECT_TRUE(check_recommended(NistTest::LinearComplexity, p)) << M;
+  }
+  // 2.7: aperiodic templates only.
+  p = {};
+  p.non_overlapping_templates = {0b111111111};
+  EXPECT_EQ(check_parameters(NistTest::NonOverlappingTemplate, p)->field, "non_overlapping_templates");
+  // The spec's worked examples (x.8) use parameters outside these ranges: the test functions still run them.
+  EXPECT_FALSE(check_overlapping(2, 10, 2));
+  EXPECT_FALSE(check_block_frequency(3));
+}
+
+TEST(NistParameters, LengthRulesMakeATestNotApplicable) {
+  const Parameters p;
+  // 2.12.7: m < floor(log2 n) - 5; 2.11.7: m < floor(log2 n) - 2 (defaults m = 10 and 16).
+  EXPECT_FALSE(check_length(NistTest::ApproximateEntropy, p, 1u << 16));
+  EXPECT_TRUE(check_length(NistTest::ApproximateEntropy, p, (1u << 16) - 1));
+  EXPECT_EQ(check_length(NistTest::ApproximateEntropy, p, 1000)->min_bits, 1u << 16);
+  EXPECT_FALSE(check_length(NistTest::Serial, p, 1u << 19));
+  EXPECT_TRUE(check_length(NistTest::Serial, p, (1u << 19) - 1));
+  // 2.10.7: N >= 200 blocks.
+  EXPECT_FALSE(check_length(NistTest::LinearComplexity, p, 200 * 500));
+  EXPECT_TRUE(check_length(NistTest::LinearComplexity, p, 200 * 500 - 1));
+  // 2.8.7: N * min(pi_i) > 5; pi_4 = 0.070 at the defaults (sts-2.1.2), so N >= 72 blocks of 1032 bits.
+  EXPECT_NEAR(min_overlapping_class(9, 1032, 5), 0.0703, 0.0005);
+  EXPECT_FALSE(check_length(NistTest::OverlappingTemplate, p, 72 * 1032));
+  EXPECT_TRUE(check_length(NistTest::OverlappingTemplate, p, 71 * 1032));
+  // run_test applies them: approximate entropy m = 16 on 1.3 Mbit (was p = 0 for good data) has no P-value.
+  Parameters big;
+  big.approximate_entropy_m = 16;
+  const TestResult r = run_test(NistTest::ApproximateEntropy, random_bits(1300000, 9), big);
+  EXPECT_FALSE(r.applicable);
+  EXPECT_NE(r.reason.find("2.12.7"), std::string::npos) << r.reason;
+  EXPECT_TRUE(std::isnan(r.p()));
 }
 
 }  // namespace dpdrng_test::stats_nist_test_nist_parameters

@@ -44,8 +44,31 @@ std::optional<ParameterProblem> check_approximate_entropy(int m);
 std::optional<ParameterProblem> check_serial(int m);
 std::optional<ParameterProblem> check_linear_complexity(int M);
 
-// The rule of test t on the parameters it uses (tests without parameters: always valid).
+// The rules of test t on the parameters it uses (tests without parameters: always valid). check_validity: where
+// the test's mathematics holds (the check_* above; the test functions throw outside it). check_recommended: the
+// ranges SP800-22 rev1a recommends in its "Input Size Recommendation" subsections (x.7), outside which the
+// reference distribution is not the statistic's (a test that passes everything or fails everything); the test
+// functions do not enforce these, so that the spec's small worked examples (x.8) still run. check_parameters:
+// both, what the tool checks before it reads any input.
+std::optional<ParameterProblem> check_validity(Test t, const Parameters& p);
+std::optional<ParameterProblem> check_recommended(Test t, const Parameters& p);
 std::optional<ParameterProblem> check_parameters(Test t, const Parameters& p);
+
+// The length rules of SP800-22 rev1a's x.7 subsections that depend on n, the sequence length: the reason in words
+// when n bits are too few for test t with these parameters, nullopt when the rule holds. A result
+// that breaks one is "not applicable: <reason>" (run_test applies it).
+struct LengthProblem {
+  std::string reason;
+  std::size_t min_bits = 0;  // the smallest n that satisfies the rule
+};
+std::optional<LengthProblem> check_length(Test t, const Parameters& p, std::size_t n);
+
+// Whether an m-bit template is aperiodic: no proper prefix equals the suffix of the same length (SP800-22 rev1a
+// 2.7: the non-overlapping test counts aperiodic templates; a periodic one's occurrences are not the Poisson-like
+// counts its variance assumes).
+bool is_aperiodic(std::uint32_t t, int m);
+// The smallest of the overlapping test's K + 1 class probabilities for m, M (templates.cpp, beside the classes).
+double min_overlapping_class(int m, int M, int K);
 
 // Throws std::invalid_argument("<field> = <value>: <reason>") when there is a problem.
 void require_valid(const std::optional<ParameterProblem>& problem);
