@@ -53,6 +53,10 @@ void record_bilayer(const dpd::BilayerResult& r, CellResult& out) {
   put(out, "pressure_xx", r.pressure_diag[0]);
   put(out, "pressure_yy", r.pressure_diag[1]);
   put(out, "pressure_zz", r.pressure_diag[2]);
+  put(out, "temperature_x", r.temperature_diag[0]);
+  put(out, "temperature_y", r.temperature_diag[1]);
+  put(out, "temperature_z", r.temperature_diag[2]);
+  if (r.zeta_weighted_second_moment.n > 0) put(out, "zeta_weighted_second_moment", r.zeta_weighted_second_moment);
   put(out, "tension", r.tension);
   put(out, "tension_conservative", r.tension_conservative);
   put(out, "thickness", r.thickness);

@@ -110,6 +110,8 @@ struct BilayerResult {
 
   Stat temperature;                     // k_BT from Σv²/(3N−3)
   std::array<Stat, 3> pressure_diag;    // kinetic + pair (C, D, R) + bond + bend virial
+  std::array<Stat, 3> temperature_diag; // k_BT_α = Σ v_α²/(N − 1)
+  Stat zeta_weighted_second_moment;     // Σ w_R²ζ² / Σ w_R² of the pair loop's ζ, per production step
   Stat pressure;
   // Σ = L_z [P_zz − ½(P_xx + P_yy)]: positive when the membrane is stretched (pulls its edges inward).
   Stat tension;
