@@ -43,7 +43,7 @@ class PairLoop final : public PairForces {
       tap->step = static_cast<std::int64_t>(step);
       tap->words_per_pair = words_;
     }
-    const Ctx c{s, v, step, tap, tap_zeta && !zero_};
+    const Ctx c{s, v, step, tap, tap_zeta && !zero_, configurational_};
     // Generator calls per pair: the blocks feed hashes a second block.
     const std::uint64_t calls = zero_ ? 0 : noise_->feed() == rng::Feed::blocks ? 2 : 1;
     ForceSums sums;
@@ -56,7 +56,7 @@ class PairLoop final : public PairForces {
         all_rows<true>(c);
       else
         all_rows<false>(c);
-      sums = reduce(s);
+      sums = reduce(s, c.conf);
       sums.numbers = calls * slots;
     } else {
       sums = compute_cells(c);
@@ -81,10 +81,10 @@ class PairLoop final : public PairForces {
   struct Rec {
     std::uint32_t j;
     double fx, fy, fz;
-    double cx, cy, cz;  // the conservative part, for Σ|∇_i U|²
   };
   struct Row {
     std::vector<Rec> rec;
+    std::vector<std::array<double, 3>> conf;  // the reactions' conservative parts, on configurational steps
     std::uint32_t count = 0;
     double w[3] = {0, 0, 0}, wc[3] = {0, 0, 0};
     double min_r2 = 0;
@@ -125,6 +125,7 @@ class PairLoop final : public PairForces {
     std::uint64_t step;
     RawTap* tap;
     bool tap_zeta;
+    bool conf;  // sum the configurational temperature's parts this step
   };
 
   // Rows in groups of kGroup, a group's hashed noise drawn in one batch (row_group).
@@ -179,8 +180,15 @@ class PairLoop final : public PairForces {
   }
 
   // Pass 2: forces for the m in-range pairs held in sc from pair `off` on (partners sc.j, ζ in sc.zeta unless
-  // Zero).
+  // Zero). The configurational sums cost a scatter per pair, so only the steps that sample them pay for them.
   template <bool Zero>
+  void forces(const Ctx& c, std::uint32_t i, std::size_t m, const Scratch& sc, std::size_t off, Row& row) {
+    if (c.conf)
+      forces<Zero, true>(c, i, m, sc, off, row);
+    else
+      forces<Zero, false>(c, i, m, sc, off, row);
+  }
+  template <bool Zero, bool Conf>
   void forces(const Ctx& c, std::uint32_t i, std::size_t m, const Scratch& sc, std::size_t off, Row& row) {
     const System& s = c.s;
     const double vxi = c.v.vx[i], vyi = c.v.vy[i], vzi = c.v.vz[i];
@@ -190,6 +198,7 @@ class PairLoop final : public PairForces {
     double cfx = 0, cfy = 0, cfz = 0, lap = 0, ww = 0, wwzz = 0;
     double min_r2 = k_.rc2();
     if (row.rec.size() < m) row.rec.resize(m);
+    if (Conf && row.conf.size() < m) row.conf.resize(m);
     row.zeta = ZetaSums{};
     if (c.tap_zeta) row.zeta.add(sc.zeta.data() + off, m);
     for (std::size_t t = 0; t < m; ++t) {
@@ -207,10 +216,13 @@ class PairLoop final : public PairForces {
       w0 -= gx * dx, w1 -= gy * dy, w2 -= gz * dz;
       const double cw = DpdKernel::conservative_weight(pf, r2);
       c0 += cw * dx * dx, c1 += cw * dy * dy, c2 += cw * dz * dz;
-      const double hx = -cw * dx, hy = -cw * dy, hz = -cw * dz;
-      cfx += hx, cfy += hy, cfz += hz;
-      row.rec[t] = {j, gx, gy, gz, hx, hy, hz};
-      lap += DpdKernel::conservative_laplacian(pf, r2, a, inv_rc);
+      row.rec[t] = {j, gx, gy, gz};
+      if constexpr (Conf) {
+        const double hx = -cw * dx, hy = -cw * dy, hz = -cw * dz;
+        cfx += hx, cfy += hy, cfz += hz;
+        row.conf[t] = {hx, hy, hz};
+        lap += DpdKernel::conservative_laplacian(pf, r2, a, inv_rc);
+      }
       const double w2p = pf.w * pf.w;
       ww += w2p, wwzz += w2p * zeta * zeta;
       min_r2 = std::min(min_r2, r2);
@@ -256,7 +268,7 @@ class PairLoop final : public PairForces {
   // Sorted copies of what the pairs read (positions, the dissipative force's velocities, types),
   // and zeroed sorted forces, by the team of the sort: each thread copies the beads of the layers it will own
   // (own_layers), so they start in its cache. Each sorted slot is written once.
-  void gather(const System& s, VelocityView v) {
+  void gather(const System& s, VelocityView v, bool conf) {
     const auto [z0, z1] = own_layers(omp_get_thread_num(), omp_get_num_threads());
     const int per_layer = cells_.layer_cells();
     const std::uint32_t* order = cells_.order().data();
@@ -265,7 +277,7 @@ class PairLoop final : public PairForces {
       xs_[k] = s.x[i], ys_[k] = s.y[i], zs_[k] = s.z[i];
       vxs_[k] = v.vx[i], vys_[k] = v.vy[i], vzs_[k] = v.vz[i];
       fxs_[k] = 0, fys_[k] = 0, fzs_[k] = 0;
-      fcx_[k] = 0, fcy_[k] = 0, fcz_[k] = 0;
+      if (conf) fcx_[k] = 0, fcy_[k] = 0, fcz_[k] = 0;
       types_[k] = s.type[i];
     }
   }
@@ -373,6 +385,13 @@ class PairLoop final : public PairForces {
   // them). Writes only to the beads of c and its forward neighbours.
   template <bool Zero>
   void cell_forces(const Ctx& cx, int c, const Scratch& sc, std::size_t& off, std::size_t& bead) {
+    if (cx.conf)
+      cell_forces<Zero, true>(cx, c, sc, off, bead);
+    else
+      cell_forces<Zero, false>(cx, c, sc, off, bead);
+  }
+  template <bool Zero, bool Conf>
+  void cell_forces(const Ctx& cx, int c, const Scratch& sc, std::size_t& off, std::size_t& bead) {
     const double rc = k_.rc, gamma = k_.gamma, sig = k_.sigma * k_.inv_sqrt_dt, inv_rc = 1.0 / k_.rc;
     double ww = 0, wwzz = 0;
     CellSums cs;
@@ -399,16 +418,18 @@ class PairLoop final : public PairForces {
         cs.w[0] -= gx * dx, cs.w[1] -= gy * dy, cs.w[2] -= gz * dz;
         const double cw = DpdKernel::conservative_weight(pf, r2);
         cs.wc[0] += cw * dx * dx, cs.wc[1] += cw * dy * dy, cs.wc[2] += cw * dz * dz;
-        const double hx = -cw * dx, hy = -cw * dy, hz = -cw * dz;
-        cfx += hx, cfy += hy, cfz += hz;
-        fcx_[b] -= hx, fcy_[b] -= hy, fcz_[b] -= hz;
-        cs.laplacian += DpdKernel::conservative_laplacian(pf, r2, aab, inv_rc);
+        if constexpr (Conf) {
+          const double hx = -cw * dx, hy = -cw * dy, hz = -cw * dz;
+          cfx += hx, cfy += hy, cfz += hz;
+          fcx_[b] -= hx, fcy_[b] -= hy, fcz_[b] -= hz;
+          cs.laplacian += DpdKernel::conservative_laplacian(pf, r2, aab, inv_rc);
+        }
         const double w2p = pf.w * pf.w;
         ww += w2p, wwzz += w2p * zeta * zeta;
         cs.min_r2 = std::min(cs.min_r2, r2);
       }
       fxs_[a] += fx, fys_[a] += fy, fzs_[a] += fz;
-      fcx_[a] += cfx, fcy_[a] += cfy, fcz_[a] += cfz;
+      if constexpr (Conf) fcx_[a] += cfx, fcy_[a] += cfy, fcz_[a] += cfz;
       cs.count += k;
     }
     if (cx.tap_zeta) cs.zeta.w2 = ww, cs.zeta.w2z2 = wwzz;
@@ -436,7 +457,7 @@ class PairLoop final : public PairForces {
       // a queue without a thread behind it could hold an even layer that an odd one waits for forever.
 #pragma omp single
       reset_layers(omp_get_num_threads());
-      gather(s, cx.v);
+      gather(s, cx.v, cx.conf);
 #pragma omp barrier
       if (stream) number_pairs(s.box);
       if (zero_)
@@ -455,6 +476,7 @@ class PairLoop final : public PairForces {
     }
     sums.conf_laplacian *= 2.0;  // each pair's ∇²u counts for both its beads
     for (const double f2 : layer_force2_) sums.conf_force2 += f2;
+    sums.configurational = cx.conf;
     if (tap)
       for (int c = 0; c < nc; ++c)
         for (int w = 0; w < words_; ++w)
@@ -519,7 +541,7 @@ class PairLoop final : public PairForces {
       if (z % cells_.colours() != 0) await_layer(z - 1), await_layer((z + 1) % layers);
       do_layer<Zero>(cx, z, thread, tap);
       std::atomic_ref<int>(done_[z]).store(1, std::memory_order_release);
-      contributed(cx.s, z), contributed(cx.s, (z + 1) % layers);
+      contributed(cx.s, z, cx.conf), contributed(cx.s, (z + 1) % layers, cx.conf);
     }
   }
 
@@ -529,7 +551,7 @@ class PairLoop final : public PairForces {
   }
 
   // One of layer z's two contributors is done; the thread completing the second scatters the layer.
-  void contributed(System& s, int z) {
+  void contributed(System& s, int z, bool conf) {
     if (std::atomic_ref<int>(pending_[z]).fetch_sub(1, std::memory_order_acq_rel) != 1) return;
     const int per_layer = cells_.layer_cells();
     const std::uint32_t* order = cells_.order().data();
@@ -537,12 +559,12 @@ class PairLoop final : public PairForces {
     for (std::uint32_t k = cells_.begin(z * per_layer), e = cells_.end((z + 1) * per_layer - 1); k < e; ++k) {
       const std::uint32_t i = order[k];
       s.fx[i] = fxs_[k], s.fy[i] = fys_[k], s.fz[i] = fzs_[k];
-      force2 += fcx_[k] * fcx_[k] + fcy_[k] * fcy_[k] + fcz_[k] * fcz_[k];
+      if (conf) force2 += fcx_[k] * fcx_[k] + fcy_[k] * fcy_[k] + fcz_[k] * fcz_[k];
     }
     layer_force2_[std::size_t(z)] = force2;
   }
 
-  ForceSums reduce(System& s) {
+  ForceSums reduce(System& s, bool conf) {
     ForceSums sums;
     sums.min_r2 = k_.rc2();
     for (std::size_t i = 0; i < s.size(); ++i) {
@@ -550,8 +572,12 @@ class PairLoop final : public PairForces {
       for (std::uint32_t t = 0; t < row.count; ++t) {
         const Rec& r = row.rec[t];
         s.fx[r.j] -= r.fx, s.fy[r.j] -= r.fy, s.fz[r.j] -= r.fz;
-        fcx_[r.j] -= r.cx, fcy_[r.j] -= r.cy, fcz_[r.j] -= r.cz;
       }
+      if (conf)
+        for (std::uint32_t t = 0; t < row.count; ++t) {
+          const std::uint32_t j = row.rec[t].j;
+          fcx_[j] -= row.conf[t][0], fcy_[j] -= row.conf[t][1], fcz_[j] -= row.conf[t][2];
+        }
       for (int a = 0; a < 3; ++a) sums.virial[a] += row.w[a], sums.virial_cons[a] += row.wc[a];
       sums.min_r2 = std::min(sums.min_r2, row.min_r2);
       sums.in_range += row.count;
@@ -559,7 +585,10 @@ class PairLoop final : public PairForces {
       sums.conf_laplacian += row.laplacian;
     }
     sums.conf_laplacian *= 2.0;  // each pair's ∇²u counts for both its beads
-    for (std::size_t i = 0; i < s.size(); ++i) sums.conf_force2 += fcx_[i] * fcx_[i] + fcy_[i] * fcy_[i] + fcz_[i] * fcz_[i];
+    if (conf)
+      for (std::size_t i = 0; i < s.size(); ++i)
+        sums.conf_force2 += fcx_[i] * fcx_[i] + fcy_[i] * fcy_[i] + fcz_[i] * fcz_[i];
+    sums.configurational = conf;
     return sums;
   }
 

@@ -81,7 +81,7 @@ Stat make_ratio_stat(const std::vector<double>& a, const std::vector<double>& b)
   const std::size_t n = std::min(a.size(), b.size());
   double ma = 0, mb = 0;
   for (std::size_t k = 0; k < n; ++k) ma += a[k], mb += b[k];
-  if (n == 0 || !(mb > 0)) return Stat{};
+  if (n < 2 || !(mb > 0)) return Stat{};  // one sample has no error to give
   const double r = ma / mb;
   mb /= double(n);
   std::vector<double> d(n);
@@ -261,7 +261,8 @@ nlohmann::json to_json(const RunResult& r, bool arrays) {
   j["configurational_temperature"] = mean_se_json(r.configurational_temperature);
   if (r.configurational_temperature.n == 0)
     j["not_applicable"]["configurational_temperature"] =
-        "not applicable: no production step with a positive Laplacian of the conservative potential";
+        "not applicable: fewer than 2 sampled production steps, or no positive mean Laplacian of the "
+        "conservative potential";
   for (int a = 0; a < 3; ++a) {
     j["temperature_components"].push_back(mean_se_json(r.temperature_diag[a]));
     j["pressure_components"].push_back(mean_se_json(r.pressure_diag[a]));

@@ -49,7 +49,8 @@ class WaterObserver : public SceneObserver {
       Pd_[a].push_back(x.P[a]), Pcd_[a].push_back(x.Pc[a]);
       Td_[a].push_back(x.kin[a] / per_component);
     }
-    conf_force2_.push_back(x.forces->conf_force2), conf_laplacian_.push_back(x.forces->conf_laplacian);
+    if (x.forces->configurational)
+      conf_force2_.push_back(x.forces->conf_force2), conf_laplacian_.push_back(x.forces->conf_laplacian);
     if (tap_zeta_) w2z2_.push_back(x.forces->zeta.w2z2), w2_.push_back(x.forces->zeta.w2);
     if (!cfg_.observables) return;
     // The velocity and g(r) samples fall into kStatBlocks consecutive blocks, for their jackknife errors.
@@ -160,6 +161,9 @@ RunResult run_water(const WaterConfig& in, const RunHooks& hooks) {
     const bool tap_raw = std::binary_search(raw_steps.begin(), raw_steps.end(), current);
     const bool production = current > cfg.equilibrate;
     const bool tap_series = !cfg.taps.pairs.empty() && production;
+    // The configurational temperature on the sampled production steps (those of the velocity PDF).
+    pair->sum_configurational(production && cfg.observables &&
+                              (current - cfg.equilibrate - 1) % cfg.sample_every == 0);
     const ForceSums f = pair->compute(sys, v, static_cast<std::uint64_t>(current), tap_raw, tap_series,
                                       obs.tap_zeta() && production, r.taps);
     // Once per step, on the positions the forces just used.

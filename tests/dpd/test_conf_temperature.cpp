@@ -96,7 +96,13 @@ TEST(ConfigurationalTemperature, SumsMatchFiniteDifferences) {
     for (std::size_t i = 0; i < t.size(); ++i) t.vx[i] = 0.1 * double(i % 7) - 0.3;
     auto pf = make_pair_forces(cfg, make_kernel(kA, kRc, 4.5, 1.0, 0.04), t.size());
     Taps taps;
+    // A step that does not ask for them sums nothing.
+    const ForceSums off = pf->compute(t, VelocityView{t.vx.data(), t.vy.data(), t.vz.data()}, 3, false, false, true, taps);
+    EXPECT_FALSE(off.configurational);
+    EXPECT_EQ(off.conf_laplacian, 0.0);
+    pf->sum_configurational(true);
     const ForceSums f = pf->compute(t, VelocityView{t.vx.data(), t.vy.data(), t.vz.data()}, 3, false, false, true, taps);
+    EXPECT_TRUE(f.configurational);
     EXPECT_NEAR(f.conf_laplacian, lap, 1e-6 * std::abs(lap)) << to_string(mode);
     EXPECT_NEAR(f.conf_force2, grad2, 1e-6 * grad2) << to_string(mode);
   }

@@ -49,7 +49,9 @@ struct ForceSums {
   std::uint64_t numbers = 0;            // generator calls this step
   ZetaSums zeta;                        // the ζ of the pairs inside r_c, when asked for (tap_zeta)
   // The configurational temperature's parts over the conservative potential U (kernel.hpp): Σ_i |∇_i U|² (the
-  // conservative force on each bead, squared) and Σ_i ∇_i²U. Summed in a fixed order, like the virial.
+  // conservative force on each bead, squared) and Σ_i ∇_i²U, on the steps that asked for them
+  // (PairForces::sum_configurational). Summed in a fixed order, like the virial.
+  bool configurational = false;
   double conf_force2 = 0;
   double conf_laplacian = 0;
 };
@@ -98,6 +100,12 @@ class PairForces {
   // recomputed like the pair series; NaN where it cannot be known (the mt19937 stream outside all-pairs mode, a
   // baseline without noise).
   virtual double zeta_of(const System& s, std::uint32_t i, std::uint32_t j, std::uint64_t step) const = 0;
+  // Whether the following compute() calls sum the configurational temperature's parts (a scatter per pair: the
+  // sampled steps only).
+  void sum_configurational(bool on) { configurational_ = on; }
+
+ protected:
+  bool configurational_ = false;
 };
 
 // Chooses the noise policy (hash via rng::with_pair_noise, the mt19937 stream, or a benchmark baseline) and

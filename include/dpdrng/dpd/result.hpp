@@ -29,7 +29,8 @@ struct Stat {
 };
 Stat make_stat(const std::vector<double>& samples);
 // The ratio of means ⟨a⟩/⟨b⟩ of paired samples (a_t, b_t), with its standard error by the delta method: the sem
-// (autocorrelation included, as make_stat) of the series (a_t − R b_t)/⟨b⟩. n = 0 when ⟨b⟩ is not positive.
+// (autocorrelation included, as make_stat) of the series (a_t − R b_t)/⟨b⟩. n = 0 (none) below 2 samples or
+// when ⟨b⟩ is not positive.
 Stat make_ratio_stat(const std::vector<double>& a, const std::vector<double>& b);
 
 // A measured quantity with its standard error, or why it has none (then mean and se are NaN).
@@ -134,7 +135,9 @@ struct RunResult {
   Stat pressure, pressure_conservative;        // ρk_BT_kin + W/(3V)
   std::array<Stat, 3> pressure_diag, pressure_conservative_diag;
   std::array<Stat, 3> temperature_diag;       // k_BT_α = Σ v_α²/(N − 1): their mean is k_BT
-  Stat configurational_temperature;            // ⟨Σ|∇_i U|²⟩ / ⟨Σ ∇_i²U⟩ over the conservative U (n = 0: none)
+  // ⟨Σ|∇_i U|²⟩ / ⟨Σ ∇_i²U⟩ over the conservative U, on the production steps that sample the velocity PDF
+  // (every sample_every-th; n = 0: none)
+  Stat configurational_temperature;
   Stat zeta_weighted_second_moment;            // Σ w_R²ζ² / Σ w_R² per step, as a ratio of means (n = 0: none)
   ZetaCorrelation zeta_correlation;
   double momentum_drift = 0;                   // max over steps of |P(t) − P(0)|, per bead
