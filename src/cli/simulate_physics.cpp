@@ -26,6 +26,13 @@ std::string pm(const dpd::Estimate& e) {
   return o.str();
 }
 
+// s padded with spaces to `width` columns (UTF-8: continuation bytes take no column, unlike std::setw's count).
+std::string pad(const std::string& s, std::size_t width) {
+  std::size_t cols = 0;
+  for (const char c : s) cols += (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+  return s + std::string(width > cols ? width - cols : 1, ' ');
+}
+
 // The main observables of a water run, by name and unit.
 struct Observable {
   std::string name, unit;
@@ -84,11 +91,9 @@ std::string compare_lines(const dpd::RunResult& variant, const dpd::RunResult& r
   std::ostringstream o;
   o << "\ncomparison: " << variant.generator << " − " << reference.generator
     << " at the same feed, seeding, integrator, Δt and initial state (95 % CI; independent runs)\n";
-  o << std::left << std::setw(24) << "observable" << std::setw(22) << variant.generator << std::setw(22)
-    << reference.generator << "shift [95 % CI]\n";
+  o << pad("observable", 24) << pad(variant.generator, 22) << pad(reference.generator, 22) << "shift [95 % CI]\n";
   for (std::size_t k = 0; k < v.size(); ++k) {
-    o << std::left << std::setw(24) << v[k].name << std::setw(22) << pm(v[k].stat) << std::setw(22)
-      << pm(ref[k].stat);
+    o << pad(v[k].name, 24) << pad(pm(v[k].stat), 22) << pad(pm(ref[k].stat), 22);
     if (v[k].stat.n == 0 || ref[k].stat.n == 0) {
       o << "n/a\n";
       continue;

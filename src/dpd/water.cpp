@@ -166,10 +166,10 @@ RunResult run_water(const WaterConfig& in, const RunHooks& hooks) {
                               (current - cfg.equilibrate - 1) % cfg.sample_every == 0);
     const ForceSums f = pair->compute(sys, v, static_cast<std::uint64_t>(current), tap_raw, tap_series,
                                       obs.tap_zeta() && production, r.taps);
-    // Once per step, on the positions the forces just used.
+    counted.seconds += seconds_between(t0, SceneClock::now());
+    // Once per step, on the positions the forces just used (outside the force time).
     if (tracker && production && cfg.integrator != Integrator::shardlow && current > tracked)
       tracker->record(sys, *pair, static_cast<std::uint64_t>(current)), tracked = current;
-    counted.seconds += seconds_between(t0, SceneClock::now());
     counted.numbers += f.numbers;
     counted.zetas += cfg.noise_override == NoiseOverride::none ? 0 : f.in_range;
     return f;
