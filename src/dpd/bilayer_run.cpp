@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "dpdrng/dpd/bilayer.hpp"
@@ -10,6 +11,7 @@
 #include "dpdrng/dpd/integrator.hpp"
 #include "dpdrng/dpd/pair_forces.hpp"
 #include "dpdrng/dpd/scene.hpp"
+#include "dpdrng/dpd/zeta_track.hpp"
 
 namespace dpdrng::dpd {
 
@@ -171,6 +173,9 @@ BilayerResult run_bilayer(const BilayerConfig& in, const RunHooks& hooks) {
   ForceCounters counted;
   BondedSums last_bonded;
   Taps no_taps;
+  std::optional<ZetaTracker> tracker;
+  if (cfg.zeta_lags > 0) tracker.emplace(cfg.zeta_lags, n, cfg.rc);
+  std::int64_t tracked = 0;
   auto make_force = [&](PairForces& pair) {
     return ForceFn([&, p = &pair](System& sys, VelocityView v) {
       const auto t0 = SceneClock::now();
@@ -187,6 +192,9 @@ BilayerResult run_bilayer(const BilayerConfig& in, const RunHooks& hooks) {
       counted.seconds += seconds_between(t0, t2), bonded_s += seconds_between(t1, t2);
       counted.numbers += f.numbers;
       counted.zetas += f.in_range;
+      // Once per production step, on the positions the pair forces just used.
+      if (tracker && current > cfg.equilibrate && current > tracked)
+        tracker->record(sys, *p, static_cast<std::uint64_t>(current)), tracked = current;
       return f;
     });
   };
@@ -206,6 +214,8 @@ BilayerResult run_bilayer(const BilayerConfig& in, const RunHooks& hooks) {
       obs, hooks);
   put_scene_run(r, run);
   obs.finish(run);
+  if (tracker) r.zeta_correlation = tracker->finish();
+  r.zeta_correlation.requested = cfg.zeta_lags > 0;
 
   // As the water scene does, scaled by the pair forces' share of the run (the bonded forces and observables are
   // the rest).

@@ -149,7 +149,10 @@ void record_physics(const dpd::RunResult& r, CellResult& out) {
     put_stat(std::string("pressure_") + axes[a] + axes[a], r.pressure_diag[a], out, false);
   }
   put_stat("zeta_weighted_second_moment", r.zeta_weighted_second_moment, out);
-  const dpd::ZetaCorrelation& z = r.zeta_correlation;
+  detail::record_zeta_correlation(r.zeta_correlation, out);
+}
+
+void detail::record_zeta_correlation(const dpd::ZetaCorrelation& z, CellResult& out) {
   if (!z.requested || !z.not_applicable.empty()) return;
   for (std::size_t l = 0; l < z.autocorrelation.size(); ++l)
     put_estimate("zeta_autocorrelation_" + std::to_string(l + 1), z.autocorrelation[l], out);
