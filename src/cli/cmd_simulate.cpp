@@ -14,9 +14,11 @@
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/common/output.hpp"
 #include "dpdrng/dpd/water.hpp"
+#include "dpdrng/rng/registry.hpp"
 #include "dpdrng/stats/moments.hpp"
 #include "bilayer_cli.hpp"
 #include "csv_out.hpp"
+#include "simulate_physics.hpp"
 
 namespace dpdrng::cli {
 namespace cmd_simulate {
@@ -27,6 +29,7 @@ struct SimulateArgs {
   std::string integrator = "mvv";
   dpd::WaterConfig cfg;
   RunOptions run{"all"};
+  std::string compare;  // a reference generator to run at the same settings
 };
 
 void write_series(const std::filesystem::path& dir, const dpd::RunResult& r) {
@@ -110,6 +113,7 @@ void print_human(const dpd::RunResult& r) {
                    : num(r.velocity_pdf.error_rate_kT_mean) + " (vs MB at k_BT), " +
                          num(r.velocity_pdf.error_rate_measured_mean) + " (at measured T)")
             << "\n"
+            << (na ? "" : physics_lines(r))
             << "momentum drift / bead  " << r.momentum_drift << "\n"
             << "zeta (pairs in r_c)    " << zeta_line(r) << "\n"
             << "time                   " << r.timings.total_s << " s, " << r.timings.particle_steps_per_s
@@ -134,6 +138,24 @@ void check_reference_only(const CLI::App& sub, const SimulateArgs& a) {
   if (given("--feed") && a.run.feed != "halves") refuse("--feed " + a.run.feed);
 }
 
+nlohmann::json simulate_json(const dpd::RunResult& r) {
+  nlohmann::json j = dpd::to_json(r, false);
+  if (!dpd::blew_up(r.status)) j["zeta"].update(zeta_json(r.zeta));
+  return j;
+}
+
+// The run's config with the reference generator: the same feed, seeding, integrator, Δt and initial state.
+dpd::WaterConfig reference_config(dpd::WaterConfig cfg, const std::string& name) {
+  try {
+    cfg.generator = rng::validated(rng::GeneratorSpec{name, 0, cfg.generator.key});
+    cfg.series = false;
+    cfg.validate();
+  } catch (const InputError& e) {
+    throw InputError(std::string("--compare: ") + e.what());
+  }
+  return cfg;
+}
+
 void run_simulate(SimulateArgs& a, const CLI::App& sub) {
   if (a.scene != "water") throw InputError("unknown scene '" + a.scene + "' (known: water, bilayer)");
   dpd::WaterConfig cfg = a.cfg;
@@ -142,6 +164,8 @@ void run_simulate(SimulateArgs& a, const CLI::App& sub) {
   if (cfg.integrator == dpd::Integrator::pnhln) check_reference_only(sub, a);
   cfg.series = !a.run.series_dir.empty();
   cfg.validate();
+  std::optional<dpd::WaterConfig> reference;
+  if (!a.compare.empty()) reference = reference_config(cfg, a.compare);
   if (cfg.series)
     prepare_output_files(a.run.series_dir, {"series.csv", "velocity_pdf.csv", "msd.csv", "rdf.csv"}, "--series");
   dpd::RunHooks hooks;
@@ -153,13 +177,27 @@ void run_simulate(SimulateArgs& a, const CLI::App& sub) {
     };
   const dpd::RunResult r = dpd::run_water(cfg, hooks);
   if (!a.run.series_dir.empty()) write_series(a.run.series_dir, r);
-  if (a.run.json) {
-    nlohmann::json j = dpd::to_json(r, false);
-    j["zeta"] = dpd::blew_up(r.status) ? nlohmann::json(nullptr) : zeta_json(r.zeta);
-    std::cout << j.dump(2) << "\n";
-  }
-  else
+  if (reference) {
+    const dpd::RunResult ref = dpd::run_water(*reference, hooks);
+    if (a.run.json) {
+      const nlohmann::json j = {{"variant", simulate_json(r)},
+                                {"reference", simulate_json(ref)},
+                                {"shifts", compare_shifts_json(r, ref)}};
+      std::cout << j.dump(2) << "\n";
+      return;
+    }
     print_human(r);
+    std::cout << "\nreference run:\n";
+    print_human(ref);
+    std::cout << compare_lines(r, ref);
+    return;
+  }
+  if (a.run.json) {
+    std::cout << simulate_json(r).dump(2) << "\n";
+  } else {
+    print_human(r);
+    std::cout << reference_note(r);
+  }
 }
 
 const bool registered = register_command(40, [](CLI::App& root) {
@@ -201,12 +239,18 @@ const bool registered = register_command(40, [](CLI::App& root) {
                 {"all (every pair, as the paper) or cells (linked cells, sorted every step)",
                  "sampling interval of the distributions",
                  "directory for time series, histograms and g(r) (CSV)"});
+  add_integer(*sub, "--zeta-autocorrelation", c.zeta_lags,
+              "lags K of the zeta autocorrelation on tracked pairs inside r_c (0: off)", {0, 1000});
+  sub->add_option("--compare", a->compare,
+                  "also run this reference generator (e.g. mt19937) at the same settings and print the shifts");
   sub->callback([a, sub] {
     // An option that would change nothing is refused rather than silently ignored.
     if (a->integrator == "shardlow" && sub->count("--lambda") > 0)
       throw InputError("--lambda: the shardlow integrator has no lambda (it belongs to Groot-Warren's MVV)");
-    if (a->scene == "bilayer")
+    if (a->scene == "bilayer") {
+      if (!a->compare.empty()) throw InputError("--compare: the water scene only");
       return simulate_bilayer(*sub, a->cfg, a->run);
+    }
     run_simulate(*a, *sub);
   });
 });

@@ -88,6 +88,7 @@ void BilayerConfig::validate() const {
     bad("feed", std::string(rng::to_string(feed)) + " applies to Gaussian noise only (uniform takes feed halves)");
   if (threads < 0) bad("threads", "must not be negative");
   if (sample_every < 1) bad("sample_every", "at least 1");
+  if (zeta_lags < 0 || zeta_lags > 1000) bad("zeta_lags", "must lie in 0..1000");
   positive(profile_bin, "profile_bin");
   if (blocks < 2) bad("blocks", "at least 2");
   positive(escape_distance, "escape_distance");

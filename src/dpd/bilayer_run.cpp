@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "dpdrng/dpd/bilayer.hpp"
@@ -10,6 +11,7 @@
 #include "dpdrng/dpd/integrator.hpp"
 #include "dpdrng/dpd/pair_forces.hpp"
 #include "dpdrng/dpd/scene.hpp"
+#include "dpdrng/dpd/zeta_track.hpp"
 
 namespace dpdrng::dpd {
 
@@ -60,7 +62,9 @@ class BilayerObserver : public SceneObserver {
         Pne[a] = P[a] - bonded_.virial_bend[a] / V_;
       }
       T_s_.push_back(x.T);
-      for (int a = 0; a < 3; ++a) Pd_s_[a].push_back(P[a]);
+      const double per_component = double(s.size()) - 1.0;  // N − 1 of the 3N − 3 degrees of freedom
+      for (int a = 0; a < 3; ++a) Pd_s_[a].push_back(P[a]), Td_s_[a].push_back(x.kin[a] / per_component);
+      w2z2_s_.push_back(x.forces->zeta.w2z2), w2_s_.push_back(x.forces->zeta.w2);
       P_s_.push_back((P[0] + P[1] + P[2]) / 3.0);
       ten_s_.push_back(tension_of(P, Lz_));
       tenc_s_.push_back(tension_of(x.Pc, Lz_));
@@ -73,7 +77,8 @@ class BilayerObserver : public SceneObserver {
   void finish(const SceneRun& run) {
     if (run.status.ok()) r_.status = disrupted_;
     r_.temperature = make_stat(T_s_);
-    for (int a = 0; a < 3; ++a) r_.pressure_diag[a] = make_stat(Pd_s_[a]);
+    for (int a = 0; a < 3; ++a) r_.pressure_diag[a] = make_stat(Pd_s_[a]), r_.temperature_diag[a] = make_stat(Td_s_[a]);
+    r_.zeta_weighted_second_moment = make_ratio_stat(w2z2_s_, w2_s_);
     r_.pressure = make_stat(P_s_);
     r_.tension = make_stat(ten_s_);
     r_.tension_conservative = make_stat(tenc_s_);
@@ -125,6 +130,7 @@ class BilayerObserver : public SceneObserver {
   const double V_, Lz_;
   const std::int64_t samples_total_;
   ProfileAccumulator prof_;
+  std::vector<double> Td_s_[3], w2z2_s_, w2_s_;
   std::vector<double> T_s_, Pd_s_[3], P_s_, ten_s_, tenc_s_, ten_nobond_s_, ten_nobend_s_, sep_s_, order_s_, nematic_s_;
   std::array<double, kTailLength - 1> order_sum_{};
   std::size_t order_n_ = 0;
@@ -167,10 +173,15 @@ BilayerResult run_bilayer(const BilayerConfig& in, const RunHooks& hooks) {
   ForceCounters counted;
   BondedSums last_bonded;
   Taps no_taps;
+  std::optional<ZetaTracker> tracker;
+  if (cfg.zeta_lags > 0) tracker.emplace(cfg.zeta_lags, n, cfg.rc);
+  std::int64_t tracked = 0;
   auto make_force = [&](PairForces& pair) {
     return ForceFn([&, p = &pair](System& sys, VelocityView v) {
       const auto t0 = SceneClock::now();
-      ForceSums f = p->compute(sys, v, static_cast<std::uint64_t>(current), false, false, false, no_taps);
+      // The production steps' ζ sums, for the noise's w_R²-weighted power.
+      ForceSums f = p->compute(sys, v, static_cast<std::uint64_t>(current), false, false, current > cfg.equilibrate,
+                               no_taps);
       const auto t1 = SceneClock::now();
       last_bonded = bonded.add(sys, st.topology);
       for (int a = 0; a < 3; ++a) {
@@ -181,6 +192,9 @@ BilayerResult run_bilayer(const BilayerConfig& in, const RunHooks& hooks) {
       counted.seconds += seconds_between(t0, t2), bonded_s += seconds_between(t1, t2);
       counted.numbers += f.numbers;
       counted.zetas += f.in_range;
+      // Once per production step, on the positions the pair forces just used.
+      if (tracker && current > cfg.equilibrate && current > tracked)
+        tracker->record(sys, *p, static_cast<std::uint64_t>(current)), tracked = current;
       return f;
     });
   };
@@ -201,6 +215,8 @@ BilayerResult run_bilayer(const BilayerConfig& in, const RunHooks& hooks) {
       obs, hooks);
   put_scene_run(r, run);
   obs.finish(run);
+  if (tracker) r.zeta_correlation = tracker->finish();
+  r.zeta_correlation.requested = cfg.zeta_lags > 0;
 
   // As the water scene does, scaled by the pair forces' share of the run (the bonded forces and observables are
   // the rest).

@@ -147,6 +147,7 @@ void WaterConfig::validate() const {
   positive(rdf_rmax, "rdf_rmax");
   if (rdf_every < 0) bad("rdf_every", "must not be negative");
   if (msd_every < 0) bad("msd_every", "must not be negative");
+  if (zeta_lags < 0 || zeta_lags > 1000) bad("zeta_lags", "must lie in 0..1000");
   positive(max_temperature, "max_temperature");
   finite(min_distance, "min_distance");
   if (min_distance < 0) bad("min_distance", "must not be negative");

@@ -77,7 +77,7 @@ class Decomposed final : public DecomposedForces {
         const double dvx = v.vx[j] - v.vx[i], dvy = v.vy[j] - v.vy[i], dvz = v.vz[j] - v.vz[i];
         const rng::PairInput canon = canonical_input(s, i, j, step);
         double za = 0, zb = 0;
-        PairForce fa{0, 0}, fb{0, 0};
+        PairForce fa{0, 0, 0}, fb{0, 0, 0};
         if (in_a) {
           za = zeta(rng::PairInput{i, j, a.d[0], a.d[1], a.d[2], step}, canon);
           fa = DpdKernel::evaluate(r2a, a.d[0], a.d[1], a.d[2], dvx, dvy, dvz, a_ij, za, k_.rc, k_.gamma, sig);

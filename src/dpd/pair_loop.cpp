@@ -26,6 +26,7 @@ class PairLoop final : public PairForces {
     noise_->threads(threads_);
     if (mode_ == PairMode::all) {
       rows_.resize(n);
+      fcx_.resize(n), fcy_.resize(n), fcz_.resize(n);
       for (auto& sc : scratch_) sc.resize(n);
     }
   }
@@ -42,7 +43,7 @@ class PairLoop final : public PairForces {
       tap->step = static_cast<std::int64_t>(step);
       tap->words_per_pair = words_;
     }
-    const Ctx c{s, v, step, tap, tap_zeta && !zero_};
+    const Ctx c{s, v, step, tap, tap_zeta && !zero_, configurational_};
     // Generator calls per pair: the blocks feed hashes a second block.
     const std::uint64_t calls = zero_ ? 0 : noise_->feed() == rng::Feed::blocks ? 2 : 1;
     ForceSums sums;
@@ -55,7 +56,7 @@ class PairLoop final : public PairForces {
         all_rows<true>(c);
       else
         all_rows<false>(c);
-      sums = reduce(s);
+      sums = reduce(s, c.conf);
       sums.numbers = calls * slots;
     } else {
       sums = compute_cells(c);
@@ -63,6 +64,14 @@ class PairLoop final : public PairForces {
     }
     if (tap_series && !zero_) record_series(s, step, taps);
     return sums;
+  }
+
+  double zeta_of(const System& s, std::uint32_t i, std::uint32_t j, std::uint64_t step) const override {
+    if (zero_ || (noise_->stream() && mode_ != PairMode::all)) return std::nan("");
+    std::uint64_t words[2] = {0, 0};
+    double zeta = 0;
+    noise_->pair(pair_input(s, i, j, step), pair_slot(i, j, s.size()), words, zeta);
+    return zeta;
   }
 
   double ns_per_number() const override { return noise_->ns_per_number(); }
@@ -75,9 +84,11 @@ class PairLoop final : public PairForces {
   };
   struct Row {
     std::vector<Rec> rec;
+    std::vector<std::array<double, 3>> conf;  // the reactions' conservative parts, on configurational steps
     std::uint32_t count = 0;
     double w[3] = {0, 0, 0}, wc[3] = {0, 0, 0};
     double min_r2 = 0;
+    double laplacian = 0;  // Σ over the row's pairs of ∇²u
     ZetaSums zeta;
   };
   struct Scratch {
@@ -104,6 +115,7 @@ class PairLoop final : public PairForces {
   struct CellSums {
     double w[3] = {0, 0, 0}, wc[3] = {0, 0, 0};
     double min_r2 = 0;
+    double laplacian = 0;
     std::uint64_t count = 0;
     ZetaSums zeta;
   };
@@ -113,6 +125,7 @@ class PairLoop final : public PairForces {
     std::uint64_t step;
     RawTap* tap;
     bool tap_zeta;
+    bool conf;  // sum the configurational temperature's parts this step
   };
 
   // Rows in groups of kGroup, a group's hashed noise drawn in one batch (row_group).
@@ -167,16 +180,25 @@ class PairLoop final : public PairForces {
   }
 
   // Pass 2: forces for the m in-range pairs held in sc from pair `off` on (partners sc.j, ζ in sc.zeta unless
-  // Zero).
+  // Zero). The configurational sums cost a scatter per pair, so only the steps that sample them pay for them.
   template <bool Zero>
-  void forces(const Ctx& c, std::uint32_t i, std::size_t m, const Scratch& sc, std::size_t off, Row& row) const {
+  void forces(const Ctx& c, std::uint32_t i, std::size_t m, const Scratch& sc, std::size_t off, Row& row) {
+    if (c.conf)
+      forces<Zero, true>(c, i, m, sc, off, row);
+    else
+      forces<Zero, false>(c, i, m, sc, off, row);
+  }
+  template <bool Zero, bool Conf>
+  void forces(const Ctx& c, std::uint32_t i, std::size_t m, const Scratch& sc, std::size_t off, Row& row) {
     const System& s = c.s;
     const double vxi = c.v.vx[i], vyi = c.v.vy[i], vzi = c.v.vz[i];
     const double* arow = &k_.a[std::size_t(s.type[i]) * k_.ntypes];
-    const double rc = k_.rc, gamma = k_.gamma, sig = k_.sigma * k_.inv_sqrt_dt;
+    const double rc = k_.rc, gamma = k_.gamma, sig = k_.sigma * k_.inv_sqrt_dt, inv_rc = 1.0 / k_.rc;
     double fx = 0, fy = 0, fz = 0, w0 = 0, w1 = 0, w2 = 0, c0 = 0, c1 = 0, c2 = 0;
+    double cfx = 0, cfy = 0, cfz = 0, lap = 0, ww = 0, wwzz = 0;
     double min_r2 = k_.rc2();
     if (row.rec.size() < m) row.rec.resize(m);
+    if (Conf && row.conf.size() < m) row.conf.resize(m);
     row.zeta = ZetaSums{};
     if (c.tap_zeta) row.zeta.add(sc.zeta.data() + off, m);
     for (std::size_t t = 0; t < m; ++t) {
@@ -185,18 +207,30 @@ class PairLoop final : public PairForces {
       const double dx = sc.dx[p], dy = sc.dy[p], dz = sc.dz[p], r2 = sc.r2[p];
       // The ζ = 0 baseline keeps the constant, as the benchmark's floor must.
       const double zeta = Zero ? 0.0 : sc.zeta[p];
+      const double a = arow[s.type[j]];
       const PairForce pf = DpdKernel::evaluate(r2, dx, dy, dz, c.v.vx[j] - vxi, c.v.vy[j] - vyi, c.v.vz[j] - vzi,
-                                               arow[s.type[j]], zeta, rc, gamma, sig);
+                                               a, zeta, rc, gamma, sig);
       const double gx = pf.s * dx, gy = pf.s * dy, gz = pf.s * dz;
       fx += gx, fy += gy, fz += gz;
-      row.rec[t] = {j, gx, gy, gz};
-      // r_ij = −d and F_ij = s·d: (r_ij)_α (F_ij)_α = −s d_α²; conservative: a w d_α² / r.
+      // r_ij = −d and F_ij = s·d: (r_ij)_α (F_ij)_α = −s d_α²; conservative: a w d_α² / r, F^C_i = −(a w / r) d.
       w0 -= gx * dx, w1 -= gy * dy, w2 -= gz * dz;
       const double cw = DpdKernel::conservative_weight(pf, r2);
       c0 += cw * dx * dx, c1 += cw * dy * dy, c2 += cw * dz * dz;
+      row.rec[t] = {j, gx, gy, gz};
+      if constexpr (Conf) {
+        const double hx = -cw * dx, hy = -cw * dy, hz = -cw * dz;
+        cfx += hx, cfy += hy, cfz += hz;
+        row.conf[t] = {hx, hy, hz};
+        lap += DpdKernel::conservative_laplacian(pf, r2, a, inv_rc);
+      }
+      const double w2p = pf.w * pf.w;
+      ww += w2p, wwzz += w2p * zeta * zeta;
       min_r2 = std::min(min_r2, r2);
     }
     c.s.fx[i] = fx, c.s.fy[i] = fy, c.s.fz[i] = fz;
+    fcx_[i] = cfx, fcy_[i] = cfy, fcz_[i] = cfz;
+    row.laplacian = lap;
+    if (c.tap_zeta) row.zeta.w2 = ww, row.zeta.w2z2 = wwzz;
     row.count = static_cast<std::uint32_t>(m);
     row.w[0] = w0, row.w[1] = w1, row.w[2] = w2;
     row.wc[0] = c0, row.wc[1] = c1, row.wc[2] = c2;
@@ -227,14 +261,14 @@ class PairLoop final : public PairForces {
   }
 
   void resize_sorted(std::size_t n) {
-    for (auto* a : {&xs_, &ys_, &zs_, &vxs_, &vys_, &vzs_, &fxs_, &fys_, &fzs_}) a->resize(n);
+    for (auto* a : {&xs_, &ys_, &zs_, &vxs_, &vys_, &vzs_, &fxs_, &fys_, &fzs_, &fcx_, &fcy_, &fcz_}) a->resize(n);
     types_.resize(n);
   }
 
   // Sorted copies of what the pairs read (positions, the dissipative force's velocities, types),
   // and zeroed sorted forces, by the team of the sort: each thread copies the beads of the layers it will own
   // (own_layers), so they start in its cache. Each sorted slot is written once.
-  void gather(const System& s, VelocityView v) {
+  void gather(const System& s, VelocityView v, bool conf) {
     const auto [z0, z1] = own_layers(omp_get_thread_num(), omp_get_num_threads());
     const int per_layer = cells_.layer_cells();
     const std::uint32_t* order = cells_.order().data();
@@ -243,6 +277,7 @@ class PairLoop final : public PairForces {
       xs_[k] = s.x[i], ys_[k] = s.y[i], zs_[k] = s.z[i];
       vxs_[k] = v.vx[i], vys_[k] = v.vy[i], vzs_[k] = v.vz[i];
       fxs_[k] = 0, fys_[k] = 0, fzs_[k] = 0;
+      if (conf) fcx_[k] = 0, fcy_[k] = 0, fcz_[k] = 0;
       types_[k] = s.type[i];
     }
   }
@@ -350,7 +385,15 @@ class PairLoop final : public PairForces {
   // them). Writes only to the beads of c and its forward neighbours.
   template <bool Zero>
   void cell_forces(const Ctx& cx, int c, const Scratch& sc, std::size_t& off, std::size_t& bead) {
-    const double rc = k_.rc, gamma = k_.gamma, sig = k_.sigma * k_.inv_sqrt_dt;
+    if (cx.conf)
+      cell_forces<Zero, true>(cx, c, sc, off, bead);
+    else
+      cell_forces<Zero, false>(cx, c, sc, off, bead);
+  }
+  template <bool Zero, bool Conf>
+  void cell_forces(const Ctx& cx, int c, const Scratch& sc, std::size_t& off, std::size_t& bead) {
+    const double rc = k_.rc, gamma = k_.gamma, sig = k_.sigma * k_.inv_sqrt_dt, inv_rc = 1.0 / k_.rc;
+    double ww = 0, wwzz = 0;
     CellSums cs;
     cs.min_r2 = k_.rc2();
     for (std::uint32_t a = cells_.begin(c); a < cells_.end(c); ++a) {
@@ -360,25 +403,36 @@ class PairLoop final : public PairForces {
         if (cx.tap_zeta) cs.zeta.add(sc.zeta.data() + first, k);
       const double vxa = vxs_[a], vya = vys_[a], vza = vzs_[a];
       const double* arow = &k_.a[std::size_t(types_[a]) * k_.ntypes];
-      double fx = 0, fy = 0, fz = 0;
+      double fx = 0, fy = 0, fz = 0, cfx = 0, cfy = 0, cfz = 0;
       for (std::size_t t = first; t < off; ++t) {
         const std::uint32_t b = sc.j[t];
         const double dx = sc.dx[t], dy = sc.dy[t], dz = sc.dz[t], r2 = sc.r2[t];
         const double zeta = Zero ? 0.0 : sc.zeta[t];
+        const double aab = arow[types_[b]];
         const PairForce pf = DpdKernel::evaluate(r2, dx, dy, dz, vxs_[b] - vxa, vys_[b] - vya, vzs_[b] - vza,
-                                                 arow[types_[b]], zeta, rc, gamma, sig);
+                                                 aab, zeta, rc, gamma, sig);
         const double gx = pf.s * dx, gy = pf.s * dy, gz = pf.s * dz;
         fx += gx, fy += gy, fz += gz;
         fxs_[b] -= gx, fys_[b] -= gy, fzs_[b] -= gz;
-        // r_ab = −d and F_ab = s·d: (r_ab)_α (F_ab)_α = −s d_α²; conservative: a w d_α² / r.
+        // r_ab = −d and F_ab = s·d: (r_ab)_α (F_ab)_α = −s d_α²; conservative: a w d_α² / r, F^C_a = −(a w / r) d.
         cs.w[0] -= gx * dx, cs.w[1] -= gy * dy, cs.w[2] -= gz * dz;
         const double cw = DpdKernel::conservative_weight(pf, r2);
         cs.wc[0] += cw * dx * dx, cs.wc[1] += cw * dy * dy, cs.wc[2] += cw * dz * dz;
+        if constexpr (Conf) {
+          const double hx = -cw * dx, hy = -cw * dy, hz = -cw * dz;
+          cfx += hx, cfy += hy, cfz += hz;
+          fcx_[b] -= hx, fcy_[b] -= hy, fcz_[b] -= hz;
+          cs.laplacian += DpdKernel::conservative_laplacian(pf, r2, aab, inv_rc);
+        }
+        const double w2p = pf.w * pf.w;
+        ww += w2p, wwzz += w2p * zeta * zeta;
         cs.min_r2 = std::min(cs.min_r2, r2);
       }
       fxs_[a] += fx, fys_[a] += fy, fzs_[a] += fz;
+      if constexpr (Conf) fcx_[a] += cfx, fcy_[a] += cfy, fcz_[a] += cfz;
       cs.count += k;
     }
+    if (cx.tap_zeta) cs.zeta.w2 = ww, cs.zeta.w2z2 = wwzz;
     cell_sums_[c] = cs;
   }
 
@@ -389,6 +443,7 @@ class PairLoop final : public PairForces {
     resize_sorted(s.size());
     const int nc = cells_.cells();
     cell_sums_.resize(std::size_t(nc));
+    layer_force2_.assign(std::size_t(cells_.layers()), 0.0);
     const bool tap = cx.tap != nullptr;
     if (tap) cell_tap_.resize(std::size_t(nc));
     const bool stream = noise_->stream();
@@ -402,7 +457,7 @@ class PairLoop final : public PairForces {
       // a queue without a thread behind it could hold an even layer that an odd one waits for forever.
 #pragma omp single
       reset_layers(omp_get_num_threads());
-      gather(s, cx.v);
+      gather(s, cx.v, cx.conf);
 #pragma omp barrier
       if (stream) number_pairs(s.box);
       if (zero_)
@@ -417,7 +472,11 @@ class PairLoop final : public PairForces {
       sums.min_r2 = std::min(sums.min_r2, cs.min_r2);
       sums.in_range += cs.count;
       sums.zeta.merge(cs.zeta);
+      sums.conf_laplacian += cs.laplacian;
     }
+    sums.conf_laplacian *= 2.0;  // each pair's ∇²u counts for both its beads
+    for (const double f2 : layer_force2_) sums.conf_force2 += f2;
+    sums.configurational = cx.conf;
     if (tap)
       for (int c = 0; c < nc; ++c)
         for (int w = 0; w < words_; ++w)
@@ -482,7 +541,7 @@ class PairLoop final : public PairForces {
       if (z % cells_.colours() != 0) await_layer(z - 1), await_layer((z + 1) % layers);
       do_layer<Zero>(cx, z, thread, tap);
       std::atomic_ref<int>(done_[z]).store(1, std::memory_order_release);
-      contributed(cx.s, z), contributed(cx.s, (z + 1) % layers);
+      contributed(cx.s, z, cx.conf), contributed(cx.s, (z + 1) % layers, cx.conf);
     }
   }
 
@@ -492,17 +551,20 @@ class PairLoop final : public PairForces {
   }
 
   // One of layer z's two contributors is done; the thread completing the second scatters the layer.
-  void contributed(System& s, int z) {
+  void contributed(System& s, int z, bool conf) {
     if (std::atomic_ref<int>(pending_[z]).fetch_sub(1, std::memory_order_acq_rel) != 1) return;
     const int per_layer = cells_.layer_cells();
     const std::uint32_t* order = cells_.order().data();
+    double force2 = 0;
     for (std::uint32_t k = cells_.begin(z * per_layer), e = cells_.end((z + 1) * per_layer - 1); k < e; ++k) {
       const std::uint32_t i = order[k];
       s.fx[i] = fxs_[k], s.fy[i] = fys_[k], s.fz[i] = fzs_[k];
+      if (conf) force2 += fcx_[k] * fcx_[k] + fcy_[k] * fcy_[k] + fcz_[k] * fcz_[k];
     }
+    layer_force2_[std::size_t(z)] = force2;
   }
 
-  ForceSums reduce(System& s) const {
+  ForceSums reduce(System& s, bool conf) {
     ForceSums sums;
     sums.min_r2 = k_.rc2();
     for (std::size_t i = 0; i < s.size(); ++i) {
@@ -511,18 +573,35 @@ class PairLoop final : public PairForces {
         const Rec& r = row.rec[t];
         s.fx[r.j] -= r.fx, s.fy[r.j] -= r.fy, s.fz[r.j] -= r.fz;
       }
+      if (conf)
+        for (std::uint32_t t = 0; t < row.count; ++t) {
+          const std::uint32_t j = row.rec[t].j;
+          fcx_[j] -= row.conf[t][0], fcy_[j] -= row.conf[t][1], fcz_[j] -= row.conf[t][2];
+        }
       for (int a = 0; a < 3; ++a) sums.virial[a] += row.w[a], sums.virial_cons[a] += row.wc[a];
       sums.min_r2 = std::min(sums.min_r2, row.min_r2);
       sums.in_range += row.count;
       sums.zeta.merge(row.zeta);
+      sums.conf_laplacian += row.laplacian;
     }
+    sums.conf_laplacian *= 2.0;  // each pair's ∇²u counts for both its beads
+    if (conf)
+      for (std::size_t i = 0; i < s.size(); ++i)
+        sums.conf_force2 += fcx_[i] * fcx_[i] + fcy_[i] * fcy_[i] + fcz_[i] * fcz_[i];
+    sums.configurational = conf;
     return sums;
   }
 
   // Hashes are pure functions of the pair input, so a tapped pair's block is recomputed here from the same
   // separation the loop used; the stream reference reads the pair's slot (all mode only, checked by validate).
-  void record_series(const System& s, std::uint64_t step, Taps& taps) const {
+  static rng::PairInput pair_input(const System& s, std::uint32_t i, std::uint32_t j, std::uint64_t step) {
     const double Lx = s.box.L[0], Ly = s.box.L[1], Lz = s.box.L[2];
+    const double dx = min_image(s.x[j] - s.x[i], Lx, Lx / 2), dy = min_image(s.y[j] - s.y[i], Ly, Ly / 2),
+                 dz = min_image(s.z[j] - s.z[i], Lz, Lz / 2);
+    return {i, j, dx, dy, dz, step};
+  }
+
+  void record_series(const System& s, std::uint64_t step, Taps& taps) const {
     if (taps.series.size() != tap_pairs_.size()) {
       taps.series.resize(tap_pairs_.size());
       for (std::size_t q = 0; q < tap_pairs_.size(); ++q) {
@@ -532,11 +611,9 @@ class PairLoop final : public PairForces {
     }
     for (auto& ser : taps.series) {
       const std::uint32_t i = ser.i, j = ser.j;
-      const double dx = min_image(s.x[j] - s.x[i], Lx, Lx / 2), dy = min_image(s.y[j] - s.y[i], Ly, Ly / 2),
-                   dz = min_image(s.z[j] - s.z[i], Lz, Lz / 2);
       std::uint64_t words[2] = {0, 0};
       double zeta = 0;
-      noise_->pair(rng::PairInput{i, j, dx, dy, dz, step}, pair_slot(i, j, s.size()), words, zeta);
+      noise_->pair(pair_input(s, i, j, step), pair_slot(i, j, s.size()), words, zeta);
       ser.steps.push_back(static_cast<std::int64_t>(step));
       for (int w = 0; w < words_; ++w) ser.words[w].push_back(words[w]);
       ser.zeta.push_back(zeta);
@@ -551,6 +628,8 @@ class PairLoop final : public PairForces {
   int threads_;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> tap_pairs_;
   std::vector<Row> rows_;  // all mode
+  std::vector<double> fcx_, fcy_, fcz_;  // the conservative force per bead (cells mode: in sorted order)
+  std::vector<double> layer_force2_;     // cells mode: Σ|F^C|² over each layer's beads
   std::vector<Scratch> scratch_;
   // cells mode
   SortedCells cells_;

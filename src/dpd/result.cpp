@@ -81,6 +81,20 @@ Stat make_stat(const std::vector<double>& x) {
   return s;
 }
 
+Stat make_ratio_stat(const std::vector<double>& a, const std::vector<double>& b) {
+  const std::size_t n = std::min(a.size(), b.size());
+  double ma = 0, mb = 0;
+  for (std::size_t k = 0; k < n; ++k) ma += a[k], mb += b[k];
+  if (n < 2 || !(mb > 0)) return Stat{};  // one sample has no error to give
+  const double r = ma / mb;
+  mb /= double(n);
+  std::vector<double> d(n);
+  for (std::size_t k = 0; k < n; ++k) d[k] = (a[k] - r * b[k]) / mb;
+  Stat s = make_stat(d);
+  s.mean = r;
+  return s;
+}
+
 std::string_view to_string(RunState s) {
   switch (s) {
     case RunState::ok: return "ok";
@@ -154,7 +168,7 @@ void put_arrays(nlohmann::json& j, const RunResult& r) {
 void null_observables(nlohmann::json& j, std::initializer_list<const char*> kept) {
   static constexpr const char* kLabels[] = {"status", "steps_done", "generator", "seeding", "distribution", "feed", "pairs",
                                             "particles", "timings", "momentum_drift_per_bead", "momentum_final",
-                                            "series"};
+                                            "series", "not_applicable"};
   auto keep = [&](const std::string& k) {
     for (const char* l : kLabels)
       if (k == l) return true;
@@ -169,6 +183,61 @@ void null_observables(nlohmann::json& j, std::initializer_list<const char*> kept
 nlohmann::json to_json(const ZetaSums& z) {
   return {{"n", z.n}, {"s1", z.s1}, {"s2", z.s2}, {"s3", z.s3}, {"s4", z.s4}};
 }
+
+nlohmann::json mean_se_json(const Stat& s) {
+  if (s.n == 0) return nullptr;
+  return {{"mean", s.mean}, {"se", s.sem}};
+}
+
+nlohmann::json to_json(const Estimate& e) {
+  if (!e.not_applicable.empty()) return nullptr;
+  return {{"mean", e.mean}, {"se", e.se}, {"n", e.n}};
+}
+
+nlohmann::json to_json(const ZetaCorrelation& z) {
+  nlohmann::json j;
+  if (!z.not_applicable.empty()) {
+    j["autocorrelation"] = nullptr;
+    j["shared_bead_correlation"] = nullptr;
+    j["not_applicable"] = "not applicable: " + z.not_applicable;
+    return j;
+  }
+  j["autocorrelation"] = nlohmann::json::array();
+  for (std::size_t l = 0; l < z.autocorrelation.size(); ++l) {
+    nlohmann::json e = to_json(z.autocorrelation[l]);
+    if (e.is_object()) e["lag"] = l + 1;
+    j["autocorrelation"].push_back(e);
+  }
+  j["shared_bead_correlation"] = to_json(z.shared_bead);
+  j["segments"] = z.segments;
+  return j;
+}
+
+namespace {
+
+// The noise as the force received it: the w_R²-weighted second moment and the ζ correlations (null with the
+// reason under "not_applicable" where they cannot be computed or were not asked for).
+nlohmann::json zeta_physics_json(const RunResult& r) {
+  nlohmann::json z;
+  z["weighted_second_moment"] = mean_se_json(r.zeta_weighted_second_moment);
+  if (r.zeta_weighted_second_moment.n == 0)
+    z["not_applicable"]["weighted_second_moment"] = "not applicable: no ζ drawn for a pair inside r_c";
+  const ZetaCorrelation& c = r.zeta_correlation;
+  if (!c.requested) {
+    z["autocorrelation"] = nullptr;
+    z["shared_bead_correlation"] = nullptr;
+    z["not_applicable"]["autocorrelation"] = "not requested (zeta_lags = 0)";
+    return z;
+  }
+  const nlohmann::json j = to_json(c);
+  z["autocorrelation"] = j["autocorrelation"];
+  z["shared_bead_correlation"] = j["shared_bead_correlation"];
+  if (j.contains("segments")) z["tracked_segments"] = j["segments"];
+  if (j.contains("not_applicable")) z["not_applicable"]["autocorrelation"] = j["not_applicable"];
+  return z;
+}
+
+}  // namespace
 
 nlohmann::json to_json(const RunResult& r, bool arrays) {
   nlohmann::json j;
@@ -193,6 +262,16 @@ nlohmann::json to_json(const RunResult& r, bool arrays) {
     j["pressure_diag"].push_back(to_json(r.pressure_diag[a]));
     j["pressure_conservative_diag"].push_back(to_json(r.pressure_conservative_diag[a]));
   }
+  j["configurational_temperature"] = mean_se_json(r.configurational_temperature);
+  if (r.configurational_temperature.n == 0)
+    j["not_applicable"]["configurational_temperature"] =
+        "not applicable: fewer than 2 sampled production steps, or no positive mean Laplacian of the "
+        "conservative potential";
+  for (int a = 0; a < 3; ++a) {
+    j["temperature_components"].push_back(mean_se_json(r.temperature_diag[a]));
+    j["pressure_components"].push_back(mean_se_json(r.pressure_diag[a]));
+  }
+  j["zeta"] = zeta_physics_json(r);
   j["momentum_final"] = r.momentum_final;
   j["velocity_pdf_error_rate_xyz"] = r.velocity_pdf.error_rate_kT;
   j["msd_fit"] = {{"from", r.msd.fit_from}, {"to", r.msd.fit_to}};

@@ -57,6 +57,7 @@ void ShardlowSweep::update_pair(double* const (&v)[3], std::uint32_t a, std::uin
   const double half_a = 0.5 * gamma_ * w * w * dt_;
   const double zeta = zeta_(rng::PairInput{i, j, dx, dy, dz, step});
   z.add(zeta);
+  z.w2 += w * w, z.w2z2 += w * w * zeta * zeta;
   const double half_noise = 0.5 * sigma_ * w * std::sqrt(dt_) * zeta;
   double* const vx = v[0];
   double* const vy = v[1];

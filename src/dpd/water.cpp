@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "dpdrng/dpd/observables.hpp"
 #include "dpdrng/dpd/scene.hpp"
 #include "dpdrng/dpd/water_integrator.hpp"
+#include "dpdrng/dpd/shardlow.hpp"
+#include "dpdrng/dpd/zeta_track.hpp"
 
 namespace dpdrng::dpd {
 
@@ -16,7 +19,8 @@ namespace {
 class WaterObserver : public SceneObserver {
  public:
   WaterObserver(const WaterConfig& cfg, RunResult& r, double L)
-      : cfg_(cfg), r_(r), tap_zeta_(cfg.observables && cfg.noise_override == NoiseOverride::off),
+      : cfg_(cfg), r_(r),
+        tap_zeta_(cfg.observables && cfg.noise_override == NoiseOverride::off && cfg.integrator != Integrator::pnhln),
         production_(cfg.steps - cfg.equilibrate),
         rdf_every_(cfg.rdf_every > 0 ? cfg.rdf_every : (n() <= 2000 ? cfg.sample_every : 20 * cfg.sample_every)),
         msd_every_(msd_interval(cfg, production_, max_frames())),
@@ -42,7 +46,14 @@ class WaterObserver : public SceneObserver {
     if (!x.production) return;
     if (tap_zeta_) r_.zeta.merge(x.forces->zeta);  // mvv: the pair loop's ζ; shardlow: the sweep's
     T_.push_back(x.T), P_s_.push_back(P_), Pc_s_.push_back(Pc_);
-    for (int a = 0; a < 3; ++a) Pd_[a].push_back(x.P[a]), Pcd_[a].push_back(x.Pc[a]);
+    const double per_component = double(s.size()) - 1.0;  // 3N − 3 degrees of freedom, N − 1 per component
+    for (int a = 0; a < 3; ++a) {
+      Pd_[a].push_back(x.P[a]), Pcd_[a].push_back(x.Pc[a]);
+      Td_[a].push_back(x.kin[a] / per_component);
+    }
+    if (x.forces->configurational)
+      conf_force2_.push_back(x.forces->conf_force2), conf_laplacian_.push_back(x.forces->conf_laplacian);
+    if (tap_zeta_) w2z2_.push_back(x.forces->zeta.w2z2), w2_.push_back(x.forces->zeta.w2);
     if (!cfg_.observables) return;
     // The velocity and g(r) samples fall into kStatBlocks consecutive blocks, for their jackknife errors.
     const auto blocks = static_cast<std::int64_t>(kStatBlocks);
@@ -57,7 +68,12 @@ class WaterObserver : public SceneObserver {
     r_.temperature = make_stat(T_);
     r_.pressure = make_stat(P_s_);
     r_.pressure_conservative = make_stat(Pc_s_);
-    for (int a = 0; a < 3; ++a) r_.pressure_diag[a] = make_stat(Pd_[a]), r_.pressure_conservative_diag[a] = make_stat(Pcd_[a]);
+    for (int a = 0; a < 3; ++a) {
+      r_.pressure_diag[a] = make_stat(Pd_[a]), r_.pressure_conservative_diag[a] = make_stat(Pcd_[a]);
+      r_.temperature_diag[a] = make_stat(Td_[a]);
+    }
+    r_.configurational_temperature = make_ratio_stat(conf_force2_, conf_laplacian_);
+    r_.zeta_weighted_second_moment = make_ratio_stat(w2z2_, w2_);
     if (!cfg_.observables) return;
     r_.velocity_pdf = vpdf_.finish(cfg_.kT, r_.temperature.n ? r_.temperature.mean : cfg_.kT);
     r_.msd = msd_.finish();
@@ -83,8 +99,26 @@ class WaterObserver : public SceneObserver {
   RdfHistogram rdf_;
   const std::int64_t rdf_samples_;
   double P_ = 0, Pc_ = 0;  // this step's scalar pressures
-  std::vector<double> T_, P_s_, Pc_s_, Pd_[3], Pcd_[3];
+  std::vector<double> T_, P_s_, Pc_s_, Pd_[3], Pcd_[3], Td_[3];
+  std::vector<double> conf_force2_, conf_laplacian_, w2z2_, w2_;  // per production step
 };
+
+ZetaCorrelation zeta_correlation(const WaterConfig& cfg, bool tapped, const std::optional<ZetaTracker>& tracker) {
+  ZetaCorrelation z;
+  z.requested = cfg.zeta_lags > 0;
+  if (!z.requested) return z;
+  if (cfg.integrator == Integrator::pnhln) {
+    z.not_applicable = "pnhln draws no pair noise (its thermostat's noise is one number a step)";
+  } else if (!tapped) {
+    z.not_applicable = "the run draws no ζ of its own (a benchmark baseline or observables off)";
+  } else if (cfg.integrator == Integrator::shardlow) {
+    z.not_applicable = "Shardlow's sweep draws the ζ outside the pair loop";
+  } else {
+    z = tracker->finish();
+    z.requested = true;
+  }
+  return z;
+}
 
 void label(const WaterConfig& cfg, std::size_t n, double L, RunResult& r) {
   r.generator = cfg.generator.name == "mt19937" ? "mt19937" : rng::describe(cfg.generator);
@@ -125,16 +159,24 @@ RunResult run_water(const WaterConfig& in, const RunHooks& hooks) {
   std::sort(raw_steps.begin(), raw_steps.end());
   raw_steps.erase(std::unique(raw_steps.begin(), raw_steps.end()), raw_steps.end());
 
-  std::int64_t current = 0;
+  std::optional<ZetaTracker> tracker;
+  if (cfg.zeta_lags > 0 && obs.tap_zeta()) tracker.emplace(cfg.zeta_lags, n, cfg.rc);
+  std::int64_t current = 0, tracked = 0;
   ForceCounters counted;
   const ForceFn force = [&](System& sys, VelocityView v) {
     const auto t0 = SceneClock::now();
     const bool tap_raw = std::binary_search(raw_steps.begin(), raw_steps.end(), current);
     const bool production = current > cfg.equilibrate;
     const bool tap_series = !cfg.taps.pairs.empty() && production;
+    // The configurational temperature on the sampled production steps (those of the velocity PDF).
+    pair->sum_configurational(production && cfg.observables &&
+                              (current - cfg.equilibrate - 1) % cfg.sample_every == 0);
     const ForceSums f = pair->compute(sys, v, static_cast<std::uint64_t>(current), tap_raw, tap_series,
                                       obs.tap_zeta() && production, r.taps);
     counted.seconds += seconds_between(t0, SceneClock::now());
+    // Once per step, on the positions the forces just used (outside the force time).
+    if (tracker && production && cfg.integrator != Integrator::shardlow && current > tracked)
+      tracker->record(sys, *pair, static_cast<std::uint64_t>(current)), tracked = current;
     counted.numbers += f.numbers;
     counted.zetas += cfg.noise_override == NoiseOverride::none ? 0 : f.in_range;
     return f;
@@ -151,6 +193,7 @@ RunResult run_water(const WaterConfig& in, const RunHooks& hooks) {
       obs, hooks);
   put_scene_run(r, run);
   obs.finish(s);
+  r.zeta_correlation = zeta_correlation(cfg, obs.tap_zeta(), tracker);
   r.timings = scene_timings(run, counted, limits, *pair, pair_force_config(cfg), kernel, s,
                             cfg.noise_override == NoiseOverride::off, cfg.threads);
   return r;

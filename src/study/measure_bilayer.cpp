@@ -23,6 +23,7 @@ dpd::BilayerConfig bilayer_engine_config(const Cell& cell, const StudyConfig& co
   dpd::BilayerConfig b;
   detail::set_run(b, cell, s, threads);
   b.warmup = std::min<std::int64_t>(b.warmup, s.equilibrate);
+  b.zeta_lags = kStudyZetaLags;
   return b;
 }
 
@@ -53,6 +54,11 @@ void record_bilayer(const dpd::BilayerResult& r, CellResult& out) {
   put(out, "pressure_xx", r.pressure_diag[0]);
   put(out, "pressure_yy", r.pressure_diag[1]);
   put(out, "pressure_zz", r.pressure_diag[2]);
+  put(out, "temperature_x", r.temperature_diag[0]);
+  put(out, "temperature_y", r.temperature_diag[1]);
+  put(out, "temperature_z", r.temperature_diag[2]);
+  if (r.zeta_weighted_second_moment.n > 0) put(out, "zeta_weighted_second_moment", r.zeta_weighted_second_moment);
+  detail::record_zeta_correlation(r.zeta_correlation, out);
   put(out, "tension", r.tension);
   put(out, "tension_conservative", r.tension_conservative);
   put(out, "thickness", r.thickness);

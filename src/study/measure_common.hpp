@@ -44,4 +44,7 @@ std::vector<double> thin(const std::vector<double>& v, std::size_t points);
 // (after at least one step) cost.numbers_per_step.
 void record_costs(const dpd::Timings& t, std::int64_t steps_done, CellResult& out);
 
+// zeta_autocorrelation_<l> and zeta_shared_bead_correlation, each with _se and _n (none where not measured).
+void record_zeta_correlation(const dpd::ZetaCorrelation& z, CellResult& out);
+
 }  // namespace dpdrng::study::detail

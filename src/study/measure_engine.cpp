@@ -60,6 +60,7 @@ dpd::WaterConfig engine_config(const Cell& cell, const StudyConfig& config, int 
   raw.insert(plan.nist_steps.begin(), plan.nist_steps.end());
   w.taps.raw_steps.assign(raw.begin(), raw.end());
   w.taps.pairs = plan.pairs;
+  w.zeta_lags = kStudyZetaLags;
   return w;
 }
 
@@ -120,6 +121,46 @@ void put_jackknife(const std::vector<std::vector<double>>& curves, const std::st
 
 }  // namespace
 
+namespace {
+
+// key_mean (unless stored already under `key`), key_sem and key_sem_dof (absent when the Stat has no samples).
+void put_stat(const std::string& key, const dpd::Stat& s, CellResult& out, bool mean = true) {
+  if (s.n == 0) return;
+  if (mean) out.scalars[key + "_mean"] = s.mean;
+  out.scalars[key + "_sem"] = s.sem;
+  out.scalars[key + "_sem_dof"] = s.sem_dof;
+}
+
+void put_estimate(const std::string& key, const dpd::Estimate& e, CellResult& out) {
+  if (!e.not_applicable.empty()) return;
+  out.scalars[key] = e.mean;
+  out.scalars[key + "_se"] = e.se;
+  out.scalars[key + "_n"] = double(e.n);
+}
+
+}  // namespace
+
+// The error budget's observables: the configurational temperature, the per-component temperatures and
+// pressures, the noise's w_R²-weighted power and the correlations of its ζ (each with its standard error; absent
+// where it cannot be computed).
+void record_physics(const dpd::RunResult& r, CellResult& out) {
+  put_stat("temperature_conf", r.configurational_temperature, out);
+  const char* axes[3] = {"x", "y", "z"};
+  for (int a = 0; a < 3; ++a) {
+    put_stat(std::string("temperature_") + axes[a], r.temperature_diag[a], out);
+    put_stat(std::string("pressure_") + axes[a] + axes[a], r.pressure_diag[a], out, false);
+  }
+  put_stat("zeta_weighted_second_moment", r.zeta_weighted_second_moment, out);
+  detail::record_zeta_correlation(r.zeta_correlation, out);
+}
+
+void detail::record_zeta_correlation(const dpd::ZetaCorrelation& z, CellResult& out) {
+  if (!z.requested || !z.not_applicable.empty()) return;
+  for (std::size_t l = 0; l < z.autocorrelation.size(); ++l)
+    put_estimate("zeta_autocorrelation_" + std::to_string(l + 1), z.autocorrelation[l], out);
+  put_estimate("zeta_shared_bead_correlation", z.shared_bead, out);
+}
+
 void record_run(const dpd::RunResult& r, CellResult& out) {
   if (!r.ok()) {
     out.status = CellStatus::unstable;
@@ -163,6 +204,7 @@ void record_run(const dpd::RunResult& r, CellResult& out) {
   sc["pressure_xx"] = r.pressure_diag[0].mean;
   sc["pressure_yy"] = r.pressure_diag[1].mean;
   sc["pressure_zz"] = r.pressure_diag[2].mean;
+  record_physics(r, out);
   if (!r.msd.msd.empty()) {
     sc["diffusion_coefficient"] = r.msd.diffusion;
     sc["diffusion_sem"] = r.msd.diffusion_sem;

@@ -80,6 +80,9 @@ TEST(CliSimulate, BadWaterParametersExitTwoNamingTheParameter) {
       {kTiny + "--integrator pnhln --feed blocks", "--feed"},
       {kTiny + "--feed bogus", "feed"},          {kTiny + "--distribution uniform --feed blocks", "feed"},
       {kTiny + "--distribution uniform --feed inverse", "feed"},
+      {kTiny + "--compare bogus", "--compare"},
+      {kTiny + "--zeta-autocorrelation -1", "--zeta-autocorrelation"},
+      {kTiny + "--zeta-autocorrelation 1001", "--zeta-autocorrelation"},
       {"simulate -q --particles 1", "particles"}, {"simulate -q -n 8", "particles/density"},
       {"simulate -q -n 64 --steps -5 --equilibrate 0", "steps"},
       {"simulate -q -n 64 --steps 0 --equilibrate 0", "steps"},
@@ -105,6 +108,7 @@ TEST(CliSimulate, BadBilayerParametersExitTwoNamingTheParameter) {
       {kTinyBilayer + "--integrator shardlow", "integrator"},
       {kTinyBilayer + "--integrator scmvv:5", "integrator"},
       {kTinyBilayer + "--integrator pnhln", "integrator"},
+      {kTinyBilayer + "--compare mt19937", "--compare"},
       {kTinyBilayer + "--distribution uniform --feed blocks", "feed"},
       {"simulate --scene bilayer -q --steps -1 --equilibrate 0", "steps"},
       {"simulate --scene bilayer -q --steps 20 --equilibrate 20", "equilibrate"},
@@ -128,8 +132,9 @@ TEST(CliSimulate, TinyWaterRunGivesTheIssuesJson) {
   EXPECT_GT(j.at("temperature_mean").get<double>(), 0.5);  // k_BT = 1 fluid, 10 samples
   EXPECT_LT(j.at("temperature_mean").get<double>(), 2.0);
   const std::set<std::string> want = {
-      "box_length", "diffusion_coefficient", "diffusion_coefficient_sem", "distribution", "feed", "generator",
-      "integrator",
+      "box_length", "configurational_temperature", "diffusion_coefficient", "diffusion_coefficient_sem",
+      "distribution", "feed", "generator", "integrator", "not_applicable", "pressure_components",
+      "temperature_components",
       "momentum_drift_per_bead", "momentum_final", "msd_fit", "pairs", "particles", "pressure",
       "pressure_conservative", "pressure_conservative_diag", "pressure_conservative_mean",
       "pressure_conservative_sem", "pressure_diag", "pressure_mean", "pressure_sem", "seeding", "status",
@@ -137,6 +142,9 @@ TEST(CliSimulate, TinyWaterRunGivesTheIssuesJson) {
       "timings", "velocity_pdf_error_rate", "velocity_pdf_error_rate_measured_T", "velocity_pdf_error_rate_sem",
       "velocity_pdf_error_rate_xyz", "zeta", "zeta_sums"};
   EXPECT_EQ(keys(j), want);
+  // 10 production steps sample the configurational temperature once: no error to give, so null with the reason.
+  EXPECT_TRUE(j.at("configurational_temperature").is_null());
+  EXPECT_TRUE(j.at("not_applicable").at("configurational_temperature").is_string());
   EXPECT_EQ(j.at("feed"), "halves");
   const std::set<std::string> timings = {
       "force_s", "list_builds", "ns_per_number", "ns_per_zeta", "particle_steps_per_s", "per_step_s",
@@ -279,6 +287,65 @@ TEST(CliSimulate, ZetaMomentsInTheJson) {
   const Result human = run(kTiny + "--feed blocks");
   EXPECT_NE(human.out.find("/ feed blocks"), std::string::npos) << human.out;
   EXPECT_NE(human.out.find("zeta (pairs in r_c)    variance"), std::string::npos) << human.out;
+}
+
+}  // namespace
+
+namespace {
+
+bool is_mean_se(const json& j) { return j.is_object() && j.at("mean").is_number() && j.at("se").is_number(); }
+
+// The error budget's observables in {mean, se} form; the ζ autocorrelation only when asked for, null with the
+// reason otherwise.
+TEST(CliSimulate, PhysicsObservablesInTheJson) {
+  const json j = run_json("simulate -n 64 --steps 120 --equilibrate 20 -q -g mt19937");
+  EXPECT_TRUE(is_mean_se(j.at("configurational_temperature"))) << j.at("configurational_temperature");
+  for (const char* k : {"temperature_components", "pressure_components"}) {
+    ASSERT_EQ(j.at(k).size(), 3u) << k;
+    for (const json& c : j.at(k)) EXPECT_TRUE(is_mean_se(c)) << k;
+  }
+  const json& z = j.at("zeta");
+  EXPECT_TRUE(is_mean_se(z.at("weighted_second_moment")));
+  EXPECT_TRUE(z.at("autocorrelation").is_null());
+  EXPECT_NE(z.at("not_applicable").at("autocorrelation").get<std::string>().find("not requested"), std::string::npos);
+  EXPECT_TRUE(z.at("variance").is_number());  // the moments stay beside them
+  const json k = run_json("simulate -n 64 --steps 120 --equilibrate 20 -q -g mt19937 --zeta-autocorrelation 3");
+  ASSERT_EQ(k.at("zeta").at("autocorrelation").size(), 3u) << k.at("zeta");
+  for (const json& e : k.at("zeta").at("autocorrelation")) EXPECT_TRUE(is_mean_se(e)) << e;
+  EXPECT_TRUE(is_mean_se(k.at("zeta").at("shared_bead_correlation")));
+  const Result human = run("simulate -n 64 --steps 120 --equilibrate 20 -q -g mt19937 --zeta-autocorrelation 2");
+  for (const char* line : {"k_BT configurational", "k_BT x, y, z", "pressure xx, yy, zz", "zeta <w²ζ²>/<w²>",
+                           "zeta autocorrelation   lag 1:", "ε/r_c³"})
+    EXPECT_NE(human.out.find(line), std::string::npos) << line << "\n" << human.out;
+  // The reference itself needs no comparison; any other generator is told it does.
+  EXPECT_EQ(human.out.find("--compare mt19937"), std::string::npos);
+  EXPECT_NE(run(kTiny + "-g tea32 -r 1").out.find("--compare mt19937"), std::string::npos);
+}
+
+// --compare runs the reference at the same settings (feed, seeding, integrator, Δt, initial state) and gives the
+// shift of each main observable with its 95 % CI, which must contain the shift.
+TEST(CliSimulate, CompareRunsTheReferenceAtTheSameSettings) {
+  const json j = run_json(kTiny + "-g tea32 -r 1 --feed blocks --dt 0.03 --sample-every 2 --compare mt19937");
+  const json &v = j.at("variant"), &ref = j.at("reference");
+  EXPECT_EQ(v.at("generator"), "tea32(1)");
+  EXPECT_EQ(ref.at("generator"), "mt19937");
+  EXPECT_EQ(ref.at("feed"), "blocks");
+  EXPECT_EQ(ref.at("steps_done"), v.at("steps_done"));
+  const json& shifts = j.at("shifts");
+  ASSERT_EQ(shifts.size(), 9u);  // T, T_conf, P, three T_α, three P_αα
+  for (const json& s : shifts) {
+    const json& d = s.at("shift");
+    ASSERT_TRUE(d.is_object()) << s;
+    const double m = d.at("mean").get<double>();
+    EXPECT_LT(d.at("ci95")[0].get<double>(), m) << s;
+    EXPECT_GT(d.at("ci95")[1].get<double>(), m) << s;
+  }
+  EXPECT_NEAR(shifts[0].at("shift").at("mean").get<double>(),
+              v.at("temperature_mean").get<double>() - ref.at("temperature_mean").get<double>(), 1e-12);
+  const Result human = run(kTiny + "-g tea32 -r 1 --compare mt19937");
+  ASSERT_EQ(human.code, 0) << human.err;
+  EXPECT_NE(human.out.find("comparison: tea32(1) − mt19937"), std::string::npos) << human.out;
+  EXPECT_NE(human.out.find("k_BT (configurational)"), std::string::npos) << human.out;
 }
 
 }  // namespace

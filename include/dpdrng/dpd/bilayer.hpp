@@ -67,6 +67,7 @@ struct BilayerConfig {
   double profile_bin = 0.2;
   int blocks = 5;  // production split into blocks for the thickness's standard error
   bool series = false;
+  int zeta_lags = 0;  // > 0: ζ autocorrelation at lags 1…zeta_lags on tracked pairs (zeta_track.hpp)
   // Guards. A lipid has left the bilayer when the mean |z − z_mid| of its tail beads exceeds escape_distance
   // (the hydrophobic core spans about ±2; the head-density peaks sit near ±2.5).
   double escape_distance = 4.0;
@@ -110,6 +111,9 @@ struct BilayerResult {
 
   Stat temperature;                     // k_BT from Σv²/(3N−3)
   std::array<Stat, 3> pressure_diag;    // kinetic + pair (C, D, R) + bond + bend virial
+  std::array<Stat, 3> temperature_diag; // k_BT_α = Σ v_α²/(N − 1)
+  Stat zeta_weighted_second_moment;     // Σ w_R²ζ² / Σ w_R² of the pair loop's ζ, per production step
+  ZetaCorrelation zeta_correlation;     // on pairs of the production steps (zeta_lags > 0)
   Stat pressure;
   // Σ = L_z [P_zz − ½(P_xx + P_yy)]: positive when the membrane is stretched (pulls its edges inward).
   Stat tension;

@@ -93,6 +93,7 @@ struct WaterConfig {
   int msd_every = 0;         // 0 = sample_every; MSD is skipped if it would need more than 2^26 stored doubles
   bool observables = true;   // false: only temperature, pressure and timings (benchmarks)
   bool series = false;       // keep the per-step time series (T, P, P_c, momentum) in the result
+  int zeta_lags = 0;         // > 0: ζ autocorrelation at lags 1…zeta_lags on tracked pairs (zeta_track.hpp)
   // Stability guards: the run stops with status "unstable at step k: reason"
   double max_temperature = 100.0;  // in units of k_BT
   double min_distance = 1e-5;      // two beads closer than this

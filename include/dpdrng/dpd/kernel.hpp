@@ -14,6 +14,7 @@ namespace dpdrng::dpd {
 struct PairForce {
   double s;    // F_i = s · d
   double a_w;  // a_ij·w·r = r_ij·F^C_ij, the conservative virial of the pair
+  double w;    // 1 − r/r_c, the weight w_R with which the pair's ζ enters the force
 };
 
 struct DpdKernel {
@@ -37,10 +38,16 @@ struct DpdKernel {
     const double w = 1.0 - r / rc;
     const double e_dv = (dx * dvx + dy * dvy + dz * dvz) * inv_r;
     const double mag = -a * w + gamma * w * w * e_dv - sigma_over_sqrt_dt * w * zeta;
-    return {mag * inv_r, a * w * r};
+    return {mag * inv_r, a * w * r, w};
   }
   // a·w/r, the conservative virial per d_α² (r_α F^C_α = this · d_α²); 0 for a skipped pair at r = 0.
   static inline double conservative_weight(const PairForce& pf, double r2) { return r2 > 0 ? pf.a_w / r2 : 0.0; }
+  // The conservative potential u(r) = (a/2) r_c w² has u' = −a w and u'' = a/r_c, so its Laplacian in 3D,
+  // u'' + 2u'/r, is a/r_c − 2 a w / r = a/r_c − 2 · conservative_weight (0 for a skipped pair at r = 0). A
+  // bead's ∇_i²U sums this over its partners, so Σ_i ∇_i²U is twice the sum over pairs.
+  static inline double conservative_laplacian(const PairForce& pf, double r2, double a, double inv_rc) {
+    return r2 > 0 ? a * inv_rc - 2.0 * conservative_weight(pf, r2) : 0.0;
+  }
   PairForce operator()(double r2, double dx, double dy, double dz, double dvx, double dvy, double dvz, double a,
                        double zeta) const {
     return evaluate(r2, dx, dy, dz, dvx, dvy, dvz, a, zeta, rc, gamma, sigma * inv_sqrt_dt);

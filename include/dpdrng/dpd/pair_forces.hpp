@@ -22,6 +22,9 @@ namespace dpdrng::dpd {
 struct ZetaSums {
   std::uint64_t n = 0;
   double s1 = 0, s2 = 0, s3 = 0, s4 = 0;
+  // Σ w_R² and Σ w_R² ζ² over the same pairs (w_R = 1 − r/r_c): the noise power the force receives, each ζ
+  // weighted as it enters the force (the pair loop's; a Shardlow sweep leaves them 0).
+  double w2 = 0, w2z2 = 0;
 
   void add(const double* z, std::size_t m) {
     double a1 = 0, a2 = 0, a3 = 0, a4 = 0;
@@ -32,7 +35,10 @@ struct ZetaSums {
     n += m, s1 += a1, s2 += a2, s3 += a3, s4 += a4;
   }
   void add(double z) { add(&z, 1); }
-  void merge(const ZetaSums& o) { n += o.n, s1 += o.s1, s2 += o.s2, s3 += o.s3, s4 += o.s4; }
+  void merge(const ZetaSums& o) {
+    n += o.n, s1 += o.s1, s2 += o.s2, s3 += o.s3, s4 += o.s4;
+    w2 += o.w2, w2z2 += o.w2z2;
+  }
 };
 
 struct ForceSums {
@@ -42,6 +48,12 @@ struct ForceSums {
   std::uint64_t in_range = 0;           // pairs inside r_c
   std::uint64_t numbers = 0;            // generator calls this step
   ZetaSums zeta;                        // the ζ of the pairs inside r_c, when asked for (tap_zeta)
+  // The configurational temperature's parts over the conservative potential U (kernel.hpp): Σ_i |∇_i U|² (the
+  // conservative force on each bead, squared) and Σ_i ∇_i²U, on the steps that asked for them
+  // (PairForces::sum_configurational). Summed in a fixed order, like the virial.
+  bool configurational = false;
+  double conf_force2 = 0;
+  double conf_laplacian = 0;
 };
 
 // Raw generator output of one force-evaluation step; words[1] is used by two-word generators (tea64's b).
@@ -84,6 +96,16 @@ class PairForces {
   virtual double ns_per_zeta() const { return 0.0; }
   virtual int words_per_pair() const = 0;
   virtual std::uint64_t list_builds() const { return 0; }
+  // The ζ pair (i < j) received in the last compute (step `step`, separation d = r_j − r_i as the loop saw it),
+  // recomputed like the pair series; NaN where it cannot be known (the mt19937 stream outside all-pairs mode, a
+  // baseline without noise).
+  virtual double zeta_of(const System& s, std::uint32_t i, std::uint32_t j, std::uint64_t step) const = 0;
+  // Whether the following compute() calls sum the configurational temperature's parts (a scatter per pair: the
+  // sampled steps only).
+  void sum_configurational(bool on) { configurational_ = on; }
+
+ protected:
+  bool configurational_ = false;
 };
 
 // Chooses the noise policy (hash via rng::with_pair_noise, the mt19937 stream, or a benchmark baseline) and

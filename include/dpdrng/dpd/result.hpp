@@ -4,6 +4,7 @@
 // distributions, timings and the taps for the statistical tests. A run that blows up is data, not a crash:
 // status says "unstable at step k: reason" and the observables cover the steps done.
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <iosfwd>
 #include <nlohmann/json.hpp>
@@ -29,6 +30,26 @@ struct Stat {
   std::size_t n = 0;
 };
 Stat make_stat(const std::vector<double>& samples);
+// The ratio of means ⟨a⟩/⟨b⟩ of paired samples (a_t, b_t), with its standard error by the delta method: the sem
+// (autocorrelation included, as make_stat) of the series (a_t − R b_t)/⟨b⟩. n = 0 (none) below 2 samples or
+// when ⟨b⟩ is not positive.
+Stat make_ratio_stat(const std::vector<double>& a, const std::vector<double>& b);
+
+// A measured quantity with its standard error, or why it has none (then mean and se are NaN).
+struct Estimate {
+  double mean = NAN, se = NAN;
+  std::uint64_t n = 0;         // products (pair-steps) behind it
+  std::string not_applicable;  // empty when measured
+};
+
+// Correlations of the ζ the force used, on tracked pairs that stay inside r_c (zeta_track.hpp).
+struct ZetaCorrelation {
+  bool requested = false;                 // WaterConfig::zeta_lags > 0
+  std::string not_applicable;             // why nothing was measured (empty when measured)
+  std::vector<Estimate> autocorrelation;  // ρ_l = ⟨ζ_t ζ_{t+l}⟩ / ⟨ζ²⟩ of one pair, l = 1…K
+  Estimate shared_bead;                   // ⟨ζ_ij ζ_ik⟩ / ⟨ζ²⟩ of two pairs sharing bead i, same step
+  std::uint64_t segments = 0;             // tracked pair segments
+};
 
 // Velocity components pooled over x, y, z and sampled production steps, against Maxwell–Boltzmann.
 struct VelocityPdf {
@@ -116,6 +137,12 @@ struct RunResult {
   Stat temperature;                            // k_BT from Σv²/(3N−3)
   Stat pressure, pressure_conservative;        // ρk_BT_kin + W/(3V)
   std::array<Stat, 3> pressure_diag, pressure_conservative_diag;
+  std::array<Stat, 3> temperature_diag;       // k_BT_α = Σ v_α²/(N − 1): their mean is k_BT
+  // ⟨Σ|∇_i U|²⟩ / ⟨Σ ∇_i²U⟩ over the conservative U, on the production steps that sample the velocity PDF
+  // (every sample_every-th; n = 0: none)
+  Stat configurational_temperature;
+  Stat zeta_weighted_second_moment;            // Σ w_R²ζ² / Σ w_R² per step, as a ratio of means (n = 0: none)
+  ZetaCorrelation zeta_correlation;
   double momentum_drift = 0;                   // max over steps of |P(t) − P(0)|, per bead
   std::array<double, 3> momentum_final{};
 
@@ -135,6 +162,9 @@ nlohmann::json to_json(const RunResult& r, bool arrays);
 nlohmann::json to_json(const Stat& s);           // {mean, std, sem, n}
 nlohmann::json timings_json(const Timings& t);   // the whole-run timings (not the production-only figures)
 nlohmann::json to_json(const ZetaSums& z);       // {n, s1, s2, s3, s4}: the power sums Σζ^k
+nlohmann::json mean_se_json(const Stat& s);      // {mean, se}; null when n = 0
+nlohmann::json to_json(const Estimate& e);       // {mean, se, n}; null when not applicable
+nlohmann::json to_json(const ZetaCorrelation& z);
 void put_mean_sem(nlohmann::json& j, const std::string& key, const Stat& s);   // key_mean, key_sem
 void put_value_sem(nlohmann::json& j, const std::string& key, const Stat& s);  // key (the mean), key_sem
 // The run blew up, and its observables mean nothing.

@@ -36,6 +36,8 @@ struct TapPlan {
 };
 TapPlan plan_taps(const Cell& cell, const StudyConfig& config, int words_per_pair);
 
+// Lags of the ζ autocorrelation every water cell measures on its tracked pairs (dpd/zeta_track.hpp).
+inline constexpr int kStudyZetaLags = 5;
 dpd::WaterConfig engine_config(const Cell& cell, const StudyConfig& config, int threads, const TapPlan& plan);
 // The membrane scene's engine config: noise, Δt, steps, pairs and threads from the cell and [scene]; the warm-up
 // is min(1 000, equilibrate) steps at the scene's dt_warmup, as for `dpdrng simulate --scene bilayer`.
@@ -46,6 +48,9 @@ void validate_scene(const StudyConfig& config);
 
 // Observables and costs of a finished (or blown-up) run.
 void record_run(const dpd::RunResult& run, CellResult& out);
+// Its error-budget part: configurational and per-component temperatures, per-component pressures with their
+// standard errors, the w_R²-weighted ζ power and the ζ correlations (scalars named in measure_engine.cpp).
+void record_physics(const dpd::RunResult& run, CellResult& out);
 // χ² over the tapped steps (one test per step and output word), lag-1 t over the tapped pairs, and the
 // cross-pair / across-time correlations of ζ.
 void record_chi2(const dpd::Taps& taps, const TapPlan& plan, const TestParams& tests, CellResult& out);
