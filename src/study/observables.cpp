@@ -5,7 +5,9 @@ namespace dpdrng::study {
 // Margins: the temperature and pressure to half a percent (a thermostat's error a DPD user notices; the paper's
 // worst generators shift T by several percent), diffusion to 3 % (its run-to-run spread is over ten times T's),
 // T's fluctuation to 2 %, each diagonal component of the pressure tensor to 0.5 % (isotropy: a noise whose
-// variance depends on the pair's direction shifts them apart). Curves bin by bin: the velocity PDF to 5 % in
+// variance depends on the pair's direction shifts them apart), the configurational temperature to 0.5 % (as T:
+// the noise moves both, the integrator only the kinetic one), each kinetic temperature component to 1 % (a third
+// of the degrees of freedom: √3 times the scalar's spread). Curves bin by bin: the velocity PDF to 5 % in
 // every bin above 1 % of its peak (the tails' counting noise), g(r) to 2 % outside the core, the MSD to 3 % (as D).
 const std::vector<ScalarSpec>& scalar_observables() {
   static const std::vector<ScalarSpec> s = {
@@ -16,6 +18,10 @@ const std::vector<ScalarSpec>& scalar_observables() {
       {"pressure_xx", "pressure_xx_sem", "pressure_components", 0.005, "P_xx"},
       {"pressure_yy", "pressure_yy_sem", "pressure_components", 0.005, "P_yy"},
       {"pressure_zz", "pressure_zz_sem", "pressure_components", 0.005, "P_zz"},
+      {"temperature_conf_mean", "temperature_conf_sem", "temperature_conf", 0.005, "T_conf"},
+      {"temperature_x_mean", "temperature_x_sem", "temperature_components", 0.01, "T_x"},
+      {"temperature_y_mean", "temperature_y_sem", "temperature_components", 0.01, "T_y"},
+      {"temperature_z_mean", "temperature_z_sem", "temperature_components", 0.01, "T_z"},
   };
   return s;
 }

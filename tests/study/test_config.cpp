@@ -147,7 +147,8 @@ TEST(StudyConfig, MarginsDefaultAndNameTheirKey) {
   EXPECT_EQ(plain.tests.margins.at("temperature"), 0.005);
   EXPECT_EQ(plain.tests.margins.at("pressure"), 0.005);
   EXPECT_EQ(plain.tests.margins.at("diffusion"), 0.03);
-  EXPECT_EQ(plain.tests.margins.size(), 8u);
+  EXPECT_EQ(plain.tests.margins.size(), 10u);
+  EXPECT_EQ(plain.tests.margins.at("temperature_components"), 0.01);
   EXPECT_EQ(plain.tests.margins.at("pressure_components"), 0.005);
   const StudyConfig set = parse_config(kMinimal + "[tests.margins]\ntemperature = 0.01\n", "cfg.toml");
   EXPECT_EQ(set.tests.margins.at("temperature"), 0.01);

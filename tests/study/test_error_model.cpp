@@ -68,7 +68,7 @@ TEST(StudyErrorModel, NullStudyScoresAreNotOverDispersed) {
           chosen[o.observable].push_back(o.score), runs[o.observable].push_back(o.score_runs);
     }
   }
-  ASSERT_EQ(chosen.size(), 7u);  // T, its fluctuation, P, P_xx, P_yy, P_zz, D
+  ASSERT_EQ(chosen.size(), 11u);  // T, its fluctuation, P, P_xx, P_yy, P_zz, D, T_conf, T_x, T_y, T_z
   for (const auto& [name, z] : chosen) {
     const auto d = dpdrng::stats::score_dispersion(z, 0.99), r = dpdrng::stats::score_dispersion(runs[name], 0.99);
     std::printf("%s: replicas' spread %.2f [%.2f, %.2f], runs' block errors %.2f [%.2f, %.2f], 99 %% CI over %zu\n",
