@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -41,6 +42,15 @@ inline Result run(const std::string& args) {
   std::remove(out.c_str());
   std::remove(err.c_str());
   return r;
+}
+
+// Exit 2, nothing on standard output, one line on standard error that mentions `names`.
+inline void expect_bad(const std::string& args, const std::string& names) {
+  const Result r = run(args);
+  EXPECT_EQ(r.code, 2) << args << ": " << r.err;
+  EXPECT_TRUE(r.out.empty()) << args;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
+  EXPECT_NE(r.err.find(names), std::string::npos) << args << ": " << r.err;
 }
 
 }  // namespace dpdrng::cli_test

@@ -21,15 +21,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Exit 2, nothing on standard output, one line on standard error that mentions `names`.
-void expect_bad(const std::string& args, const std::string& names) {
-  const Result r = run(args);
-  EXPECT_EQ(r.code, 2) << args << ": " << r.err;
-  EXPECT_TRUE(r.out.empty()) << args;
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
-  EXPECT_NE(r.err.find(names), std::string::npos) << args << ": " << r.err;
-}
-
 // Each {arguments, what the message names} after `prefix`.
 void expect_all_bad(const std::string& prefix, const std::vector<std::pair<std::string, std::string>>& cases) {
   for (const auto& [args, names] : cases) expect_bad(prefix + args, names);

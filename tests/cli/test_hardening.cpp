@@ -21,15 +21,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Exit 2, nothing on standard output, one line on standard error that mentions `names`.
-void expect_bad(const std::string& args, const std::string& names) {
-  const Result r = run(args);
-  EXPECT_EQ(r.code, 2) << args << ": " << r.err;
-  EXPECT_TRUE(r.out.empty()) << args;
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
-  EXPECT_NE(r.err.find(names), std::string::npos) << args << ": " << r.err;
-}
-
 std::string file_with(const std::string& suffix, const std::string& bytes) {
   const std::string p = scratch(suffix);
   std::ofstream(p, std::ios::binary) << bytes;
