@@ -224,6 +224,38 @@ std::vector<VariantReport> group(const StudyConfig& config, const std::vector<Ce
   return out;
 }
 
+// The mean over the replicas of a cell estimate `name` with its standard error `se_name`: the replicas' errors
+// combined as those of independent runs. NaN unless every replica stores both.
+stats::Measured replica_average(const std::vector<const CellResult*>& cells, const std::string& name,
+                                const std::string& se_name) {
+  stats::Measured m;
+  double sum = 0, var = 0;
+  for (const auto* c : cells) {
+    const double x = c->scalar(name, NAN), e = c->scalar(se_name, NAN);
+    if (!std::isfinite(x) || !std::isfinite(e)) return m;
+    sum += x, var += e * e;
+  }
+  if (cells.empty()) return m;
+  const double n = double(cells.size());
+  m.mean = sum / n, m.se = std::sqrt(var) / n;
+  return m;
+}
+
+void measure_noise_power(VariantReport& v) {
+  const stats::Measured m2w =
+      replica_average(v.cells, "zeta_weighted_second_moment_mean", "zeta_weighted_second_moment_sem");
+  if (!std::isfinite(m2w.mean)) return;
+  std::vector<stats::Measured> rho;
+  for (int lag = 1;; ++lag) {
+    const std::string k = "zeta_autocorrelation_" + std::to_string(lag);
+    const stats::Measured r = replica_average(v.cells, k, k + "_se");
+    if (!std::isfinite(r.mean)) break;
+    rho.push_back(r);
+  }
+  v.power_lags = rho.size();
+  v.noise_power = stats::effective_noise_power(m2w, rho);
+}
+
 void measure(VariantReport& v, double alpha) {
   v.passes = detail::summarise_passes(v, alpha);
   v.correlations = detail::summarise_correlations(v);
@@ -239,15 +271,20 @@ void measure(VariantReport& v, double alpha) {
     for (int k = 0; k < 4; ++k) s[k] += c->scalar("zeta_s" + std::to_string(k + 1), 0);
   }
   if (n >= 4) v.zeta = stats::moments_of(stats::MomentSums::from_powers(n, s[0], s[1], s[2], s[3]));
+  measure_noise_power(v);
 }
 
-// The ⟨ζ²⟩ = 1 test of a variant with ζ (a member of the study's family) and its predicted temperature shift.
+// The ⟨ζ²⟩ = 1 test of a variant with ζ (a member of the study's family) and its predicted temperature shifts.
 void zeta_test(Analysis& a) {
   for (auto& v : a.variants) {
     if (v.zeta.n >= 4 && std::isfinite(v.zeta.second_moment_p)) v.zeta_decision.p = v.zeta.second_moment_p;
     const VariantReport* ref = a.reference_for(v.key);
     if (ref && ref->zeta.second_moment > 0 && v.zeta.second_moment > 0)
       v.zeta_predicted_shift = v.zeta.second_moment / ref->zeta.second_moment - 1;
+    if (ref && ref->noise_power.value > 0 && v.noise_power.value > 0) {
+      const stats::NoisePower ratio = stats::predicted_temperature_ratio(v.noise_power, ref->noise_power);
+      v.power_predicted_shift = {ratio.value - 1, ratio.se};
+    }
   }
 }
 

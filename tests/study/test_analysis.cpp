@@ -411,3 +411,36 @@ TEST(StudyAnalysis, TemperatureLimitFromTheStudysOwnSpread) {
 }
 
 }  // namespace dpdrng_test::study_test_analysis
+
+namespace dpdrng_test::study_test_analysis {
+
+// The effective noise power pools the replicas' w_R²-weighted ⟨ζ²⟩ and ρ_k, and predicts T/T_ref as the ratio of
+// the variant's power to the reference's (stats::effective_noise_power): with ⟨w²ζ²⟩/⟨w²⟩ = 0.96 and ρ₁ = 0.01
+// against the reference's 1.0 and no ρ, the prediction is 0.96·1.02 − 1 = −2.08 %; the lags every replica stores
+// count, a lag one replica lacks does not.
+TEST(StudyAnalysis, EffectivePowerPredictsTheTemperatureShift) {
+  const StudyConfig cfg = parse_config(kConfig, "t.toml");
+  auto cells = fake_cells(cfg, 0.0);
+  for (auto& c : cells) {
+    const bool ref = c.cell.reference;
+    c.scalars["zeta_weighted_second_moment_mean"] = ref ? 1.0 : 0.96;
+    c.scalars["zeta_weighted_second_moment_sem"] = 0.002;
+    if (!ref) {
+      c.scalars["zeta_autocorrelation_1"] = 0.01;
+      c.scalars["zeta_autocorrelation_1_se"] = 0.001;
+      if (c.cell.replica == 0) c.scalars["zeta_autocorrelation_2"] = 0.3, c.scalars["zeta_autocorrelation_2_se"] = 0.001;
+    }
+  }
+  const Analysis a = analyse(cfg, cells);
+  const VariantReport& v = find(a, "tea32", 1);
+  EXPECT_EQ(v.power_lags, 1u);
+  EXPECT_NEAR(v.noise_power.value, 0.96 * 1.02, 1e-12);
+  EXPECT_NEAR(v.power_predicted_shift.value, 0.96 * 1.02 - 1, 1e-12);
+  // Each side's mean over n replicas has standard error 0.002/√n (the ρ term adds 0.96²·4·0.001²/n).
+  const double n = double(v.cells.size()), nr = double(a.reference_for(v.key)->cells.size());
+  const double var_v = (1.02 * 1.02 * 0.002 * 0.002 + 0.96 * 0.96 * 4 * 1e-6) / n, var_r = 0.002 * 0.002 / nr;
+  EXPECT_NEAR(v.power_predicted_shift.se, 0.96 * 1.02 * std::sqrt(var_v / std::pow(0.96 * 1.02, 2) + var_r), 1e-12);
+  EXPECT_NE(zeta_csv(a).find("power_predicted_T_shift"), std::string::npos);
+}
+
+}  // namespace dpdrng_test::study_test_analysis

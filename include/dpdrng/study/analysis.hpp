@@ -21,6 +21,7 @@
 #include "dpdrng/stats/equivalence.hpp"
 #include "dpdrng/stats/mean_tests.hpp"
 #include "dpdrng/stats/moments.hpp"
+#include "dpdrng/stats/noise_power.hpp"
 #include "dpdrng/study/cell_result.hpp"
 #include "dpdrng/study/config.hpp"
 
@@ -146,6 +147,14 @@ struct VariantReport {
   Decision zeta_decision;  // ⟨ζ²⟩ = 1, a member of the study's one family
   // ⟨ζ²⟩ / ⟨ζ²⟩_reference − 1: the shift of k_BT that fluctuation–dissipation predicts (T ∝ σ²⟨ζ²⟩).
   double zeta_predicted_shift = NAN;
+  // The noise's effective power as the force receives it (stats::effective_noise_power): the w_R²-weighted ⟨ζ²⟩
+  // times 1 + 2Σρ_k over the lags every replica stored (`power_lags`; 0: the weighted moment alone), the
+  // replicas' means averaged and their standard errors combined. NaN when the cells hold no weighted moment.
+  stats::NoisePower noise_power;
+  std::size_t power_lags = 0;
+  // The temperature shift the two effective powers predict against the reference, with its standard error; the
+  // reference's ρ are taken as 0 where its cells hold none (a stream draws independent numbers).
+  stats::NoisePower power_predicted_shift;
   // Why this variant has no verdict against the reference (empty when it has one): its reference replicas
   // are missing, unreadable or failed.
   std::string no_reference;
