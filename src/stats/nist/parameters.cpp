@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "dpdrng/common/numbers.hpp"
@@ -17,6 +18,12 @@ int floor_log2(std::size_t n) { return n == 0 ? -1 : static_cast<int>(std::bit_w
 
 // The overlapping test's expected count of m-bit windows of ones per block, λ = (M - m + 1) / 2^m.
 double overlap_lambda(int m, int M) { return static_cast<double>(M - m + 1) / std::ldexp(1.0, m); }
+
+// A bit count computed in double (tiny class probabilities make it astronomical), held to what size_t holds.
+std::size_t saturated_length(double bits) {
+  constexpr double kLimit = 1.8e19;  // just below 2^64
+  return bits >= 0 && bits < kLimit ? static_cast<std::size_t>(bits) : std::numeric_limits<std::size_t>::max();
+}
 
 }  // namespace
 
@@ -87,7 +94,7 @@ std::optional<LengthProblem> check_length(Test t, const Parameters& p, std::size
         return LengthProblem{"N = " + std::to_string(N) + " blocks of M bits give N * min(pi_i) = " +
                                  format_g(static_cast<double>(N) * min_pi) +
                                  ", not above 5 (SP800-22 rev1a 2.8.7)",
-                             (static_cast<std::size_t>(5 / min_pi) + 1) * static_cast<std::size_t>(p.overlapping_M)};
+                             saturated_length((std::floor(5 / min_pi) + 1) * double(p.overlapping_M))};
       return std::nullopt;
     }
     case Test::LinearComplexity: {
