@@ -86,20 +86,30 @@ double margin_of(const std::map<std::string, double>& margins, const std::string
   return it == margins.end() ? fallback : it->second;
 }
 
+// The reference variants other than `ref` at its Δt and integrator (the other feeds and distributions).
+detail::ReferencePool reference_pool(const Analysis& a, const VariantReport& ref) {
+  detail::ReferencePool pool;
+  for (const auto& r : a.variants)
+    if (r.key.reference && &r != &ref && r.key.dt == ref.key.dt && r.key.integrator == ref.key.integrator)
+      pool.push_back(&r);
+  return pool;
+}
+
 // Observables the cells do not store are left out (not a verdict's member).
-void compare(VariantReport& v, const VariantReport& ref, bool bilayer, const std::map<std::string, double>& margins) {
+void compare(VariantReport& v, const VariantReport& ref, const detail::ReferencePool& pool, bool bilayer,
+             const std::map<std::string, double>& margins) {
   const auto keep = [&](Comparison c) {
     if (c.note != "not measured") v.observables.push_back(std::move(c));
   };
   if (bilayer) {
     for (const auto& o : bilayer_observables()) keep(detail::compare_paired(o.name, v, ref));
-    for (const auto& c : bilayer_curves()) keep(detail::compare_curve(c, v, ref, NAN));
+    for (const auto& c : bilayer_curves()) keep(detail::compare_curve(c, v, ref, {}, NAN));
     return;
   }
   for (const auto& s : scalar_observables())
-    keep(detail::compare_scalar(s, v, ref, margin_of(margins, s.margin_key, s.margin)));
+    keep(detail::compare_scalar(s, v, ref, pool, margin_of(margins, s.margin_key, s.margin)));
   for (const auto& c : curve_observables())
-    keep(detail::compare_curve(c, v, ref, margin_of(margins, c.margin_key, c.margin)));
+    keep(detail::compare_curve(c, v, ref, pool, margin_of(margins, c.margin_key, c.margin)));
 }
 
 std::string percent_or_plain(const Comparison& c, double x) {
@@ -404,10 +414,13 @@ std::string Analysis::error_model_sentence() const {
     return "Error model: each paired difference's variance pools the pairs' spread with both runs' own block "
            "errors (weighted by their degrees of freedom); the membrane's observables have no margins, so its "
            "verdicts are \"differs\" or \"inconclusive\".";
-  return "Error model: a scalar's shift is tested against the replicas' spread alone (Student's t on n + m − 2 "
-         "degrees of freedom); the runs' own block errors are not pooled in, because over null comparisons they "
-         "understate the spread (the z-score check below). Curves: the L² F test for a difference, and every "
-         "kept bin's Student t of the replicas for equivalence.";
+  return "Error model: a scalar's shift is tested against the replicas' spread (Student's t): one replica's "
+         "variance pooled from the variant's replicas, its reference's and the reference's under the study's other "
+         "feeds and distributions, weighted by their degrees of freedom, unless the compared replicas vary more "
+         "than that pool (one-sided F test at 5 %), when their own spread alone is used. The runs' own block errors "
+         "are not pooled in, because over null comparisons they understate the spread (the z-score check below). "
+         "Curves: the L² F test for a difference, and every kept bin's t-test under the same pooled model for "
+         "equivalence.";
 }
 
 bool known_good(const VariantKey& k) {
@@ -447,8 +460,8 @@ Analysis analyse(const StudyConfig& config, const std::vector<CellResult>& cells
   for (auto& v : a.variants) {
     const VariantReport* ref = a.reference_for(v.key);
     if (v.key.reference) continue;  // its own tests need no reference
-    v.no_reference = missing_reference(ref, config.replicas, config.reference);
-    if (v.no_reference.empty()) compare(v, *ref, a.bilayer, a.margins);
+    v.no_reference = missing_reference(ref, config.reference_replica_count(), config.reference);
+    if (v.no_reference.empty()) compare(v, *ref, reference_pool(a, *ref), a.bilayer, a.margins);
   }
   // The families: a variant without its reference has no verdict, so none of its tests is decided.
   std::vector<std::vector<Tested>> tests(a.variants.size());

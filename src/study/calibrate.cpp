@@ -62,6 +62,7 @@ std::vector<const CellResult*> block(const std::vector<CellResult>& cells, int f
 StudyConfig sub_study(const StudyConfig& pool, int replicas, const std::vector<GeneratorEntry>& generators) {
   StudyConfig s = pool;
   s.replicas = replicas;
+  s.reference_replicas = 0;  // a null study's block holds as many reference replicas as variant ones
   s.generators = generators;
   return s;
 }
@@ -205,6 +206,7 @@ StudyConfig calibration_pool(const StudyConfig& config, const CalibrationPlan& p
   p.scene.dt = {config.scene.dt.front()};
   p.tests.nist_generators.clear();
   p.generators = kGood;
+  p.reference_replicas = 0;  // the pool's replicas serve the reference and the generators alike
   for (const auto& d : defects_of(plan)) {
     GeneratorEntry e{d.name(), {1}, {}};
     rng::validated({e.name, 0});  // InputError for an out-of-range size

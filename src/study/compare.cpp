@@ -107,6 +107,19 @@ std::vector<double> values_of(const std::vector<const CellResult*>& cells, const
 
 namespace {
 
+// A group's spread as an estimate of one replica's variance, with its degrees of freedom (none below 2 values).
+stats::VarianceEstimate spread_of(const std::vector<double>& x) {
+  if (x.size() < 2) return {0, 0};
+  const double sd = stats::sample_sd(x);
+  return {sd * sd, double(x.size() - 1)};
+}
+
+std::vector<stats::VarianceEstimate> pool_spreads(const ReferencePool& pool, const std::string& name) {
+  std::vector<stats::VarianceEstimate> out;
+  for (const auto* r : pool) out.push_back(spread_of(values_of(r->cells, name)));
+  return out;
+}
+
 // The replicas' means and spreads on both sides; false, with the reason in the note, when a side has none.
 bool describe(Comparison& c, const std::vector<double>& x, const std::vector<double>& y) {
   c.n = x.size();
@@ -150,7 +163,8 @@ void set_shift(Comparison& c, double shift, double half_width) {
   c.ci_high = shift + half_width;
 }
 
-Comparison compare_scalar(const ScalarSpec& spec, const VariantReport& v, const VariantReport& ref, double margin) {
+Comparison compare_scalar(const ScalarSpec& spec, const VariantReport& v, const VariantReport& ref,
+                          const ReferencePool& pool, double margin) {
   Comparison c;
   c.observable = spec.name;
   const auto x = values_of(v.cells, spec.name), y = values_of(ref.cells, spec.name);
@@ -162,7 +176,7 @@ Comparison compare_scalar(const ScalarSpec& spec, const VariantReport& v, const 
     return c;
   }
   c.error_rate = std::abs(c.value - c.ref) / scale;
-  const stats::TTest t = stats::pooled_t(x, y);
+  const stats::TTest t = stats::pooled_t(x, y, pool_spreads(pool, spec.name));
   set_test(c, t, "t", scale);
   set_shift(c, t.diff / scale, t.ci_half_width(0.95) / scale);
   c.margin = margin;
@@ -209,15 +223,19 @@ Comparison compare_paired(const std::string& base, const VariantReport& v, const
 // Every kept bin's relative difference from the reference, a Student t of the replicas: the bin whose 95 % CI
 // reaches furthest from 0 is the curve's shift, and the largest of the bins' equivalence P-values its
 // equivalence P-value (NaN when a bin cannot be tested).
-void bin_shifts(Comparison& c, const stats::Curves& x, const stats::Curves& y, const std::vector<std::size_t>& bins,
-                const std::vector<double>& my, double margin) {
+void bin_shifts(Comparison& c, const stats::Curves& x, const stats::Curves& y, const std::vector<stats::Curves>& pool,
+                const std::vector<std::size_t>& bins, const std::vector<double>& my, double margin) {
   double reach = -1, p = 0;
+  const auto column = [](const stats::Curves& curves, std::size_t k) {
+    std::vector<double> v;
+    for (const auto& curve : curves) v.push_back(curve[k]);
+    return v;
+  };
   for (const std::size_t k : bins) {
     if (!(my[k] > 0)) continue;
-    std::vector<double> xk, yk;
-    for (const auto& curve : x) xk.push_back(curve[k]);
-    for (const auto& curve : y) yk.push_back(curve[k]);
-    const stats::TTest t = stats::pooled_t(xk, yk);
+    std::vector<stats::VarianceEstimate> extra;
+    for (const auto& g : pool) extra.push_back(spread_of(column(g, k)));
+    const stats::TTest t = stats::pooled_t(column(x, k), column(y, k), extra);
     const double rel = t.diff / my[k], half = t.ci_half_width(0.95) / my[k];
     if (!std::isfinite(half)) return;
     if (std::abs(rel) + half > reach) reach = std::abs(rel) + half, set_shift(c, rel, half);
@@ -228,7 +246,8 @@ void bin_shifts(Comparison& c, const stats::Curves& x, const stats::Curves& y, c
   c.equivalence.p = p;
 }
 
-Comparison compare_curve(const CurveSpec& spec, const VariantReport& v, const VariantReport& ref, double margin) {
+Comparison compare_curve(const CurveSpec& spec, const VariantReport& v, const VariantReport& ref,
+                         const ReferencePool& pool, double margin) {
   Comparison c;
   c.observable = spec.name;
   c.test = "F";
@@ -264,7 +283,9 @@ Comparison compare_curve(const CurveSpec& spec, const VariantReport& v, const Va
   c.dof = t.dof1;
   c.dof2 = t.dof2;
   c.decision.p = t.p_value;
-  bin_shifts(c, x, y, bins, my, margin);
+  std::vector<stats::Curves> pool_curves;
+  for (const auto* r : pool) pool_curves.push_back(curves_of(r->cells, spec.series, len));
+  bin_shifts(c, x, y, pool_curves, bins, my, margin);
   if (!std::isfinite(t.p_value)) c.note = "too few replicas for a P-value";
   return c;
 }

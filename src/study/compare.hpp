@@ -9,16 +9,24 @@
 
 namespace dpdrng::study::detail {
 
-// Student's two-sample t-test of the replicas' values (their spreads alone: the error model), the relative shift
-// with its 95 % CI, and the equivalence test at `margin` (NaN: none).
-Comparison compare_scalar(const ScalarSpec& spec, const VariantReport& v, const VariantReport& ref, double margin);
+// The study's other reference variants (the reference under the other feeds and distributions at the same Δt and
+// integrator): runs of one generator, whose replicas' spreads estimate the same variance as the reference's own.
+using ReferencePool = std::vector<const VariantReport*>;
+
+// Student's two-sample t-test of the replicas' values, the relative shift with its 95 % CI, and the equivalence
+// test at `margin` (NaN: none). The error model: one replica's variance pooled from the spreads of the variant's
+// replicas, its reference's and every `pool` reference's (stats::pooled_t, which keeps the pool out when the
+// compared replicas vary more than it does).
+Comparison compare_scalar(const ScalarSpec& spec, const VariantReport& v, const VariantReport& ref,
+                          const ReferencePool& pool, double margin);
 // The bilayer's: paired t-test replica by replica on <base>_mean, the runs' own <base>_sem pooled in.
 Comparison compare_paired(const std::string& base, const VariantReport& v, const VariantReport& ref);
 // The L² F test of the replicas' curves (stats::curve_test), its effective number of bins from the runs'
 // leave-one-block-out curves where the cells hold them. Equivalence is the intersection of every kept bin's
 // equivalence test at `margin` on its relative difference (each bin a Student t of the replicas): the curves are
 // equivalent when every bin is, so the P-value is the largest of the bins' and needs no correction over them.
-Comparison compare_curve(const CurveSpec& spec, const VariantReport& v, const VariantReport& ref, double margin);
+Comparison compare_curve(const CurveSpec& spec, const VariantReport& v, const VariantReport& ref,
+                         const ReferencePool& pool, double margin);
 
 std::vector<PassSummary> summarise_passes(const VariantReport& v, double alpha);
 std::vector<CorrelationSummary> summarise_correlations(const VariantReport& v);

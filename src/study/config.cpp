@@ -190,6 +190,7 @@ nlohmann::json StudyConfig::canonical() const {
   // The margins are left out: they judge the cells, they do not make them, so a study directory may be
   // reported again under other margins.
   // Present only when it is not the default, so that configs without the key keep their hash.
+  if (reference_replica_count() != replicas) j["reference_replicas"] = reference_replica_count();
   if (tests.error_control != ErrorControl::study) j["tests"]["error_control"] = to_string(tests.error_control);
   if (feeds != std::vector<rng::Feed>{rng::Feed::halves}) j["feeds"] = names_of(feeds);
   if (!integrators.empty()) j["integrators"] = integrators;
@@ -217,6 +218,8 @@ StudyConfig parse_config(const std::string& toml_text, const std::string& origin
   if (known_generator(st, "reference", c.reference).keyed_hash)
     st.fail("reference", "must be a stream generator (mt19937)");
   c.replicas = static_cast<int>(st.integer("replicas", c.replicas, 1, 1000));
+  if (st.get("reference_replicas"))
+    c.reference_replicas = static_cast<int>(st.integer("reference_replicas", 0, c.replicas, 1000));
   c.seed = static_cast<std::uint64_t>(st.integer("seed", 1, 0, std::numeric_limits<long>::max()));
   st.finish();
 

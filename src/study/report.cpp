@@ -130,7 +130,8 @@ std::string report_header(const StudyConfig& config, const Analysis& a, const st
                             " discarded)"
                       : std::to_string(s.steps) + " steps (" + std::to_string(s.equilibrate) + " discarded)")
        << ", pairs: " << dpd::to_string(s.pairs) << "\n";
-  md << "- replicas per variant: " << config.replicas << "; reference: " << config.reference << "; α = " << a.alpha
+  md << "- replicas per variant: " << config.replicas << "; reference: " << config.reference << " ("
+     << config.reference_replica_count() << " replicas under each noise); α = " << a.alpha
      << "\n- "
      << (a.family_size ? a.error_control_sentence() : "Error control: none needed (no tests, no verdicts)")
      << "\n- " << detection_limit << "\n";

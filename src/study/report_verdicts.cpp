@@ -164,8 +164,8 @@ std::string how_to_read_verdicts(const StudyConfig& config, const Analysis& a) {
     << " under the same assumptions: the variant's pair seeding of the noise (distance: the separation's bits; "
        "pair-step: pair ids and step), its distribution (gauss, uniform) and, for the Gaussian, its feed "
        "(halves, blocks, inverse), the same integrator and Δt, the same scene and initial states, "
-    << config.replicas
-    << " replicas each; it holds for those settings only. *Equivalent*: for every observable with a margin δ, the "
+    << config.replicas << " replicas of the variant and " << config.reference_replica_count()
+    << " of the reference; it holds for those settings only. *Equivalent*: for every observable with a margin δ, the "
        "shift's (1 − 2α′) confidence interval lies inside ±δ (two one-sided tests, α′ Holm's threshold over the "
        "study's equivalence tests), and no test differs. *Differs*: some test rejects equality after the error "
        "control below. *Inconclusive*: neither — the replicas cannot tell a shift smaller than δ from one larger. "

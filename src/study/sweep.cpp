@@ -94,7 +94,8 @@ std::vector<Cell> enumerate_cells(const StudyConfig& config) {
   const std::vector<std::string> scene_integrator{""};
   for (double dt : config.scene.dt)
     for (const auto& integ : config.integrators.empty() ? scene_integrator : config.integrators) {
-      for (int rep = 0; rep < config.replicas; ++rep) {
+      for (int rep = 0; rep < config.reference_replica_count(); ++rep) {
+        const bool reference_alone = rep >= config.replicas;  // the reference's extra replicas
         // A replica's seed sets the initial state (and the reference's stream); distinct per replica, shared
         // across generators.
         const std::uint64_t seed = rng::splitmix64_mix(config.seed * 0x9e3779b97f4a7c15ull + std::uint64_t(rep));
@@ -116,7 +117,7 @@ std::vector<Cell> enumerate_cells(const StudyConfig& config) {
             ref.seed = seed;
             ref.nist = wants_nist(ref.generator, dist, feed, rep) && tapped(integ);
             cells.push_back(ref);
-            if (reference_only(integ)) continue;
+            if (reference_only(integ) || reference_alone) continue;
             for (const auto& g : config.generators)
               for (const rng::Seeding seeding : g.seedings.empty() ? config.seedings : g.seedings)
                 for (int r : g.rounds) {

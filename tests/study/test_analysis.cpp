@@ -1,5 +1,6 @@
 // Verdicts: a planted difference is found, identical generators are never called different and are called
 // equivalent where the margins allow, and the statistics under them agree with hand computations.
+#include <gsl/gsl_cdf.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include "dpdrng/stats/summary.hpp"
 #include "dpdrng/study/analysis.hpp"
 #include "dpdrng/study/report.hpp"
+#include "config_text.hpp"
 #include "fake_measure.hpp"
 
 namespace dpdrng_test::study_test_analysis {
@@ -152,7 +154,8 @@ TEST(StudyAnalysis, APlantedTemperatureShiftIsCalledADifference) {
 }
 
 // The error model is the replicas' spread: Student's two-sample t on the replicas' values, n + m − 2 degrees of
-// freedom, whatever block errors the runs report (here runs that claim a 100 times smaller error change nothing).
+// freedom when the study has one reference, whatever block errors the runs report (here runs that claim a 100
+// times smaller error change nothing).
 TEST(StudyAnalysis, TheErrorModelIsTheReplicasSpread) {
   const StudyConfig cfg = parse_config(kConfig, "c.toml");
   auto cells = fake_cells(cfg, 0.0);
@@ -174,6 +177,61 @@ TEST(StudyAnalysis, TheErrorModelIsTheReplicasSpread) {
   EXPECT_EQ(t.sigma, comparison(find(plain, "tea32", 8), "temperature_mean").sigma);
   // The runs' block errors still give their own score, for the error-model check.
   EXPECT_GT(std::abs(t.score_runs), 10 * std::abs(t.score));
+}
+
+// With the reference under three noises (two feeds and the uniform distribution) and more reference replicas
+// than variant ones, a variant's comparison pools one replica's variance from its own replicas, its reference's
+// and the two other references' (R's t.test(var.equal = TRUE) generalised: the pooled variance is
+// Σ (n_g − 1) s_g² / Σ (n_g − 1), Student t on Σ (n_g − 1) degrees of freedom, the standard error
+// s √(1/n + 1/m)); a variant whose replicas vary far more than the references gets its own spread alone.
+TEST(StudyAnalysis, TheErrorModelPoolsTheReferencesUnderEveryNoise) {
+  const std::string text = config_text::StudyText{.name = "pool",
+                                                  .replicas = 4,
+                                                  .study_extra = "reference_replicas = 7\n",
+                                                  .distributions = R"(["gauss", "uniform"])",
+                                                  .sweep_extra = "feeds = [\"halves\", \"blocks\"]\n",
+                                                  .generators = {{.name = "tea32", .rounds = "[8]"}},
+                                                  .scene = "particles = 16\nsteps = 20\nequilibrate = 2\n",
+                                                  .tests = "ttest_pairs = 2\n"}
+                               .text();
+  const StudyConfig cfg = parse_config(text, "c.toml");
+  auto cells = fake_cells(cfg, 0.0);
+  const Analysis a = analyse(cfg, cells);
+  std::size_t compared = 0;
+  for (const auto& v : a.variants) {
+    if (v.key.reference) {
+      EXPECT_EQ(v.cells.size(), 7u);
+      continue;
+    }
+    ++compared;
+    ASSERT_EQ(v.cells.size(), 4u);
+    std::vector<double> x, y;
+    for (const auto* c : v.cells) x.push_back(c->scalar("temperature_mean", NAN));
+    double ss = 0, dof = 0;
+    for (const auto& r : a.variants) {
+      if (!r.key.reference) continue;
+      std::vector<double> g;
+      for (const auto* c : r.cells) g.push_back(c->scalar("temperature_mean", NAN));
+      if (&r == a.reference_for(v.key)) y = g;
+      ss += (double(g.size()) - 1) * std::pow(dpdrng::stats::sample_sd(g), 2), dof += double(g.size()) - 1;
+    }
+    ss += 3 * std::pow(dpdrng::stats::sample_sd(x), 2), dof += 3;
+    const Comparison& t = comparison(v, "temperature_mean");
+    EXPECT_EQ(t.dof, 21.0);  // 3 + 3 × 6
+    EXPECT_EQ(dof, 21.0);
+    const double se = std::sqrt(ss / dof) * std::sqrt(1.0 / 4 + 1.0 / 7);
+    EXPECT_NEAR(t.sigma, se / std::abs(dpdrng::stats::mean(y)), 1e-12);
+    EXPECT_NEAR(t.decision.p, 2 * gsl_cdf_tdist_Q(std::abs(t.statistic), 21), 1e-12);
+  }
+  EXPECT_EQ(compared, 3u);
+  // One variant's replicas spread 30 times wider than the references': the pool stays out of its comparison.
+  for (auto& c : cells)
+    if (!c.cell.reference && c.cell.feed == rng::Feed::blocks)
+      c.scalars["temperature_mean"] = 1.03 + 30 * (c.scalars["temperature_mean"] - 1.03);
+  const Analysis wide = analyse(cfg, cells);
+  for (const auto& v : wide.variants)
+    if (!v.key.reference && v.key.feed == rng::Feed::blocks)
+      EXPECT_EQ(comparison(v, "temperature_mean").dof, 9.0);  // 4 + 7 − 2
 }
 
 TEST(StudyAnalysis, PassFractionsPoolReplicasAndKeepTea64OutputsApart) {

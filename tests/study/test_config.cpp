@@ -124,10 +124,11 @@ TEST(StudyConfig, PaperStudyCoversBothTeaFamiliesAtAllRounds) {
   for (const auto& g : c.generators) EXPECT_EQ(g.rounds, rounds) << g.name;
   EXPECT_EQ(c.distributions, (std::vector<rng::Distribution>{rng::Distribution::gauss, rng::Distribution::uniform}));
   EXPECT_EQ(c.feeds, (std::vector<rng::Feed>{rng::Feed::halves, rng::Feed::blocks, rng::Feed::inverse}));
-  EXPECT_EQ(c.replicas, 3);
+  EXPECT_EQ(c.replicas, 4);
+  EXPECT_EQ(c.reference_replica_count(), 16);
   EXPECT_EQ(c.scene.steps, 10000);
   EXPECT_EQ(c.scene.equilibrate, 500);
-  EXPECT_EQ(c.tests.margins.at("temperature"), 0.005);
+  EXPECT_EQ(c.tests.margins.at("temperature"), 0.01);
   EXPECT_EQ(c.tests.nist_sequences, 1000);
   EXPECT_EQ(c.tests.nist_bits, 1 << 20);
   std::size_t nist_tea32 = 0;

@@ -7,11 +7,13 @@
 // ⟨ζ²⟩ = 1, pass fractions and correlations) or `inconclusive` (neither). Every verdict, bold mark and chart
 // of the report reads those decisions.
 //
-// The error model: a shift's standard error is the replicas' spread (Student t on n + m − 2 degrees of
-// freedom). The runs' own block errors pooled over the replicas understate it: over the 108 null comparisons of
-// the committed studies (tools/z_dispersion.py) their z-scores have a variance of 1.50 [1.16, 1.99] for the
-// pressure and 1.24 [0.97, 1.65] for the temperature, the replicas' spread 1.03 and 1.02; score_dispersion()
-// checks the chosen model on any study.
+// The error model: a shift's standard error comes from the replicas' spreads — the variant's, its reference's and
+// those of the reference under the study's other feeds and distributions (one generator, so one variance), pooled
+// with their degrees of freedom (Student t). The pool is left out when the compared replicas vary more than it
+// does (stats::pooled_t's consistency test). The runs' own block errors are not used: over the 108 null
+// comparisons of the committed studies (tools/z_dispersion.py) their z-scores have a variance of 1.50
+// [1.16, 1.99] for the pressure and 1.24 [0.97, 1.65] for the temperature; score_dispersion() checks the chosen
+// model on any study.
 #include <cmath>
 #include <functional>
 #include <map>
