@@ -64,6 +64,7 @@ class BilayerObserver : public SceneObserver {
       T_s_.push_back(x.T);
       const double per_component = double(s.size()) - 1.0;  // N − 1 of the 3N − 3 degrees of freedom
       for (int a = 0; a < 3; ++a) Pd_s_[a].push_back(P[a]), Td_s_[a].push_back(x.kin[a] / per_component);
+      aniso_s_.push_back(P[0] - P[1]);
       w2z2_s_.push_back(x.forces->zeta.w2z2), w2_s_.push_back(x.forces->zeta.w2);
       P_s_.push_back((P[0] + P[1] + P[2]) / 3.0);
       ten_s_.push_back(tension_of(P, Lz_));
@@ -78,6 +79,7 @@ class BilayerObserver : public SceneObserver {
     if (run.status.ok()) r_.status = disrupted_;
     r_.temperature = make_stat(T_s_);
     for (int a = 0; a < 3; ++a) r_.pressure_diag[a] = make_stat(Pd_s_[a]), r_.temperature_diag[a] = make_stat(Td_s_[a]);
+    r_.pressure_anisotropy = make_stat(aniso_s_);
     r_.zeta_weighted_second_moment = make_ratio_stat(w2z2_s_, w2_s_);
     r_.pressure = make_stat(P_s_);
     r_.tension = make_stat(ten_s_);
@@ -130,7 +132,7 @@ class BilayerObserver : public SceneObserver {
   const double V_, Lz_;
   const std::int64_t samples_total_;
   ProfileAccumulator prof_;
-  std::vector<double> Td_s_[3], w2z2_s_, w2_s_;
+  std::vector<double> Td_s_[3], w2z2_s_, w2_s_, aniso_s_;
   std::vector<double> T_s_, Pd_s_[3], P_s_, ten_s_, tenc_s_, ten_nobond_s_, ten_nobend_s_, sep_s_, order_s_, nematic_s_;
   std::array<double, kTailLength - 1> order_sum_{};
   std::size_t order_n_ = 0;
@@ -237,6 +239,7 @@ nlohmann::json to_json(const BilayerResult& r, bool arrays) {
   put_mean_sem(j, "pressure_xx", r.pressure_diag[0]);
   put_mean_sem(j, "pressure_yy", r.pressure_diag[1]);
   put_mean_sem(j, "pressure_zz", r.pressure_diag[2]);
+  put_mean_sem(j, "pressure_xx_minus_yy", r.pressure_anisotropy);
   put_value_sem(j, "membrane_tension", r.tension);
   j["membrane_tension_convention"] = "L_z [P_zz - (P_xx + P_yy)/2], positive = stretched";
   put_value_sem(j, "membrane_tension_conservative", r.tension_conservative);

@@ -95,14 +95,15 @@ detail::ReferencePool reference_pool(const Analysis& a, const VariantReport& ref
   return pool;
 }
 
-// Observables the cells do not store are left out (not a verdict's member).
+// Water observables the cells do not store are left out (not a verdict's member); the membrane's stay in its
+// table as "not measured" (its cells are costly, so stores older than an observable are common), untested.
 void compare(VariantReport& v, const VariantReport& ref, const detail::ReferencePool& pool, bool bilayer,
              const std::map<std::string, double>& margins) {
   const auto keep = [&](Comparison c) {
     if (c.note != "not measured") v.observables.push_back(std::move(c));
   };
   if (bilayer) {
-    for (const auto& o : bilayer_observables()) keep(detail::compare_paired(o.name, v, ref));
+    for (const auto& o : bilayer_observables()) v.observables.push_back(detail::compare_paired(o.name, v, ref));
     for (const auto& c : bilayer_curves()) keep(detail::compare_curve(c, v, ref, {}, NAN));
     return;
   }
@@ -345,9 +346,13 @@ double curve_error(const std::vector<double>& curve, const std::vector<double>& 
 const std::vector<BilayerObservable>& bilayer_observables() {
   static const std::vector<BilayerObservable> obs = {
       {"temperature", "T", "kinetic temperature k_BT"},
+      {"temperature_x", "T_x", "kinetic temperature of the x components"},
+      {"temperature_y", "T_y", "kinetic temperature of the y components"},
+      {"temperature_z", "T_z", "kinetic temperature of the z components (normal to the membrane)"},
       {"pressure_xx", "P_xx", "pressure tensor P_xx"},
       {"pressure_yy", "P_yy", "pressure tensor P_yy"},
       {"pressure_zz", "P_zz", "pressure tensor P_zz (normal to the membrane)"},
+      {"pressure_xx_minus_yy", "P_xx − P_yy", "in-plane anisotropy P_xx − P_yy (0 by symmetry about z)"},
       {"tension", "Σ", "tension L_z[P_zz − (P_xx+P_yy)/2]"},
       {"thickness", "thickness", "head-density peak to peak"},
       {"tail_order", "order", "tail order P2 against z"},

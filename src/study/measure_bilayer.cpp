@@ -57,6 +57,7 @@ void record_bilayer(const dpd::BilayerResult& r, CellResult& out) {
   put(out, "temperature_x", r.temperature_diag[0]);
   put(out, "temperature_y", r.temperature_diag[1]);
   put(out, "temperature_z", r.temperature_diag[2]);
+  put(out, "pressure_xx_minus_yy", r.pressure_anisotropy);
   if (r.zeta_weighted_second_moment.n > 0) put(out, "zeta_weighted_second_moment", r.zeta_weighted_second_moment);
   detail::record_zeta_correlation(r.zeta_correlation, out);
   put(out, "tension", r.tension);

@@ -221,6 +221,8 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
   write(dir / "pass_table.csv", pass_table_csv(a));
   write(dir / "observables.csv", observables_csv(a));
   write(dir / "zeta.csv", zeta_csv(a));
+  const std::vector<BudgetRow> budget = error_budget(a, config.scene.kT);
+  write(dir / "error_budget.csv", error_budget_csv(budget));
   write(dir / "cells.csv", cells_csv(cells));
   std::vector<std::string> nist_files;
   for (const auto& v : a.variants)
@@ -251,6 +253,9 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
      << summary_markdown(a) << "\n";
   for (const auto& d : dists)
     if (have("speed_vs_accuracy_" + d)) md << chart("speed_vs_accuracy_" + d, "speed against accuracy, " + d);
+
+  md << "## Error budget: noise error against integrator error\n\n"
+     << error_budget_text(config.scene.kT) << "\n" << error_budget_markdown(budget) << "\n";
 
   md << "## The numbers the force uses: ζ and the temperature\n\n"
      << "The ζ of every production step's pairs inside r_c, pooled over the replicas. *Noise* names the "
@@ -346,7 +351,7 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
 
   md << detail::broken_cells_markdown(cells);
   md << "\n## Files\n\n"
-     << "`verdicts.csv` (one row per variant × observable or test, and per variant), `summary.csv`, "
+     << "`verdicts.csv` (one row per variant × observable or test, and per variant), `error_budget.csv`, `summary.csv`, "
         "`pass_table.csv`, `observables.csv`, `zeta.csv`, `cells.csv` (every scalar of every cell)";
   for (const auto& f : nist_files) md << ", `" << f << "`";
   md << "; charts in `charts/` (SVG, PNG and the gnuplot script of each); all data in `../study.h5` (h5py: "

@@ -120,6 +120,8 @@ fs::path write_bilayer_report(const StudyConfig& config, const std::vector<CellR
   detail::write_text(dir / "bilayer_table.csv", bilayer_table_csv(a));
   detail::write_text(dir / "bilayer_differences.csv", bilayer_differences_csv(a));
   detail::write_text(dir / "verdicts.csv", verdicts_csv(a));
+  const std::vector<BudgetRow> budget = error_budget(a, config.scene.kT);
+  detail::write_text(dir / "error_budget.csv", error_budget_csv(budget));
   detail::write_text(dir / "cells.csv", detail::cells_csv(cells));
   std::vector<std::string> made;
   if (options.charts) made = write_bilayer_charts(a, dir / "charts", options.log);
@@ -142,8 +144,10 @@ fs::path write_bilayer_report(const StudyConfig& config, const std::vector<CellR
 
   md << "## Membrane observables per generator\n\n"
      << "Replica means ± 95 % confidence half-widths (Student t over the replicas; † = a single replica, 1.96 × the "
-        "run's own block standard error). T: kinetic k_BT; P_αα: pressure tensor including the bond and bending "
-        "virials; Σ = L_z[P_zz − (P_xx + P_yy)/2] (positive = stretched); thickness: distance between the two "
+        "run's own block standard error). T: kinetic k_BT; T_α: its component along α (Σv_α²/(N − 1)); P_αα: "
+        "pressure tensor including the bond and bending virials; P_xx − P_yy: the in-plane anisotropy, averaged "
+        "step by step (0 by symmetry about the normal z; P_zz differs by the tension); Σ = L_z[P_zz − (P_xx + P_yy)/2] "
+        "(positive = stretched); thickness: distance between the two "
         "head-density peaks; order: P2 = ⟨3cos²θ − 1⟩/2 of the tail bonds against the normal.\n\n";
   for (const auto& d : dists) {
     md << "### " << d << "\n\n" << bilayer_table_markdown(a, d) << "\n";
@@ -160,6 +164,9 @@ fs::path write_bilayer_report(const StudyConfig& config, const std::vector<CellR
         "profile from MT's over bins above a tenth of the peak, and the L² F test of the replicas' profiles with "
         "its effective number of independent bins d.\n\n";
   for (const auto& d : dists) md << "### " << d << "\n\n" << bilayer_differences_markdown(a, d) << "\n";
+
+  md << "## Error budget: noise error against integrator error\n\n"
+     << error_budget_text(config.scene.kT) << "\n" << error_budget_markdown(budget) << "\n";
 
   md << "## Density profiles\n\n";
   bool any_profile = false;
@@ -186,7 +193,7 @@ fs::path write_bilayer_report(const StudyConfig& config, const std::vector<CellR
 
   md << detail::broken_cells_markdown(cells);
   md << "\n## Files\n\n"
-     << "`summary.csv`, `verdicts.csv` (one row per generator × observable and per generator), "
+     << "`summary.csv`, `verdicts.csv` (one row per generator × observable and per generator), `error_budget.csv`, "
         "`bilayer_table.csv` (means and CIs), `bilayer_differences.csv` (differences and their tests), "
         "`cells.csv` (every scalar of every cell); charts in `charts/` (SVG, PNG and the gnuplot script of "
         "each); all data in `../study.h5` (each cell's profile/z, profile/head, profile/tail, profile/water).\n";

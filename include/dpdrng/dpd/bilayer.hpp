@@ -112,6 +112,9 @@ struct BilayerResult {
   Stat temperature;                     // k_BT from Σv²/(3N−3)
   std::array<Stat, 3> pressure_diag;    // kinetic + pair (C, D, R) + bond + bend virial
   std::array<Stat, 3> temperature_diag; // k_BT_α = Σ v_α²/(N − 1)
+  // P_xx − P_yy per production step: 0 by symmetry about the normal z; its own block error carries the two
+  // components' correlation, which their separate errors cannot.
+  Stat pressure_anisotropy;
   Stat zeta_weighted_second_moment;     // Σ w_R²ζ² / Σ w_R² of the pair loop's ζ, per production step
   ZetaCorrelation zeta_correlation;     // on pairs of the production steps (zeta_lags > 0)
   Stat pressure;

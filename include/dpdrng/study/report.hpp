@@ -2,6 +2,7 @@
 // `dpdrng study report DIR`: Markdown and CSV tables, gnuplot charts (SVG and PNG) and report.md, all under
 // DIR/report/. Everything is computed from the stored cells, so a report of a partial study is a partial
 // report (it says how many cells are missing), never a wrong one.
+#include <cmath>
 #include <filesystem>
 #include <iosfwd>
 #include <string>
@@ -48,6 +49,25 @@ std::string how_to_read_verdicts(const StudyConfig& config, const Analysis& a);
 // measured against MT.
 std::string zeta_markdown(const Analysis& a);
 std::string zeta_csv(const Analysis& a);
+// The error budget (report/error_budget.csv): per variant and observable with a target (k_BT for the kinetic,
+// configurational and per-component temperatures; 0 for the membrane's P_xx − P_yy), the noise error (variant −
+// reference at the same settings: the verdict's comparison and 95 % CI), the integrator error (reference − target:
+// the reference's replica mean with its 95 % CI) and the variant's own error against the target. Temperatures as
+// fractions of k_BT; the anisotropy absolute. Values NaN where a side has no data.
+struct BudgetPart {
+  double value = NAN, ci_low = NAN, ci_high = NAN;
+};
+struct BudgetRow {
+  const VariantReport* variant = nullptr;
+  std::string observable;
+  double target = NAN;
+  bool relative = true;
+  BudgetPart noise, integrator, total;
+};
+std::vector<BudgetRow> error_budget(const Analysis& a, double kT);
+std::string error_budget_csv(const std::vector<BudgetRow>& rows);
+std::string error_budget_markdown(const std::vector<BudgetRow>& rows);
+std::string error_budget_text(double kT);  // the table's definitions, for the report
 // Per generator × feed: which tests flag it (χ², lag-1 t, NIST, ⟨ζ²⟩, the physical observables).
 std::string flags_markdown(const Analysis& a);
 // The NIST reference suite's finalAnalysisReport layout for one variant's battery.
