@@ -196,6 +196,135 @@ TEST(BilayerStudyAnalysis, PlantedShiftIsFoundAndNothingElse) {
   EXPECT_NE(table.find("| tea32(1) distance | T |"), std::string::npos) << table;
 }
 
+namespace {
+
+const Comparison* find_comparison(const VariantReport& v, const std::string& name) {
+  for (const auto& o : v.observables)
+    if (o.observable == name) return &o;
+  return nullptr;
+}
+
+// Six replicas of MT, tea32(1) and tea32(32) whose cells hold the components: a state shared by the replica's
+// generators plus a small scatter of each cell's own, and per generator a planted shift of T (`dT`) and of
+// P_xx − P_yy (`dA`).
+std::vector<CellResult> component_cells(const StudyConfig& cfg, double ref_T, double dT_r1, double dA_r1) {
+  std::vector<CellResult> cells;
+  for (const auto& c : enumerate_cells(cfg)) {
+    const double state = double(dpdrng::rng::splitmix64_mix(c.seed) >> 11) * 0x1p-53 - 0.5;
+    const std::uint64_t who = (std::uint64_t(c.rounds) << 8) | (c.reference ? 1u : 2u);
+    const auto own = [&](int k) {
+      return double(dpdrng::rng::splitmix64_mix(c.seed ^ who ^ (std::uint64_t(k) << 32)) >> 11) * 0x1p-53 - 0.5;
+    };
+    const bool r1 = !c.reference && c.rounds == 1;
+    const double T = ref_T + 0.01 * state + 0.002 * own(0) + (r1 ? dT_r1 : 0.0);
+    CellResult r = bilayer_cell(c, T, 0.5 * state + 0.3 * own(1));
+    const auto put = [&](const std::string& n, double mean) {
+      r.scalars[n + "_mean"] = mean;
+      r.scalars[n + "_sem"] = 0.01;
+    };
+    put("temperature_x", T + 0.002 * own(2)), put("temperature_y", T + 0.002 * own(3));
+    put("temperature_z", T + 0.002 * own(4));
+    put("pressure_xx_minus_yy", 0.05 * state + 0.02 * own(5) + (r1 ? dA_r1 : 0.0));
+    cells.push_back(std::move(r));
+  }
+  return cells;
+}
+
+const std::string kSixReplicas =
+    with(with(kTinyBilayer, "replicas = 1", "replicas = 6"), "rounds = [1]", "rounds = [1, 32]");
+
+}  // namespace
+
+// Isotropy in the membrane's verdicts: an in-plane anisotropy P_xx − P_yy planted in one generator (the halves
+// feed's direction-dependent defect) is found by its paired test inside the study's one Holm family, and the
+// per-component temperatures are tested beside it.
+TEST(BilayerStudyAnalysis, InPlaneAnisotropyAndTemperatureComponentsAreVerdictMembers) {
+  const StudyConfig cfg = parse_config(kSixReplicas, "b.toml");
+  const std::vector<CellResult> cells = component_cells(cfg, 1.0, 0.0, 0.3);
+  const Analysis a = analyse(cfg, cells);
+  std::size_t tested = 0;
+  for (const auto& v : a.variants) {
+    if (v.key.reference) continue;
+    for (const char* name : {"temperature_x", "temperature_y", "temperature_z", "pressure_xx_minus_yy"}) {
+      const Comparison* c = find_comparison(v, name);
+      ASSERT_NE(c, nullptr) << name;
+      EXPECT_TRUE(c->available && c->paired && c->decision.tested()) << name;
+      EXPECT_EQ(c->n_pairs, 6u) << name;
+      tested += c->decision.tested();
+    }
+    const Comparison* aniso = find_comparison(v, "pressure_xx_minus_yy");
+    if (v.key.rounds == 1) {
+      EXPECT_NEAR(aniso->diff, 0.3, 0.03);
+      EXPECT_TRUE(aniso->decision.differs);
+      EXPECT_NE(v.verdict.find("differs"), std::string::npos) << v.verdict;
+      EXPECT_FALSE(find_comparison(v, "temperature")->decision.differs);
+    } else {
+      EXPECT_FALSE(aniso->decision.differs);
+    }
+  }
+  EXPECT_EQ(tested, 8u);
+  // One family: every variant's tests, the components included.
+  std::size_t members = 0;
+  for (const auto& v : a.variants) members += v.tests;
+  EXPECT_EQ(a.family_size, members);
+  EXPECT_EQ(a.families, 1u);
+  EXPECT_EQ(a.family_size, 2u * bilayer_observables().size());  // every scalar of both variants, no profiles stored
+  const std::string table = bilayer_differences_markdown(a, "gauss");
+  EXPECT_NE(table.find("| tea32(1) distance | P_xx − P_yy | "), std::string::npos) << table;
+}
+
+// Cells stored before the components were measured: those rows say "not measured", are not tested, and the
+// verdict rests on the rest as before.
+TEST(BilayerStudyAnalysis, CellsWithoutComponentsSayNotMeasured) {
+  const StudyConfig cfg = parse_config(kSixReplicas, "b.toml");
+  std::vector<CellResult> cells = component_cells(cfg, 1.0, -0.03, 0.0);
+  for (auto& c : cells)
+    for (const char* n : {"temperature_x", "temperature_y", "temperature_z", "pressure_xx_minus_yy"})
+      for (const char* suffix : {"_mean", "_sem"}) c.scalars.erase(std::string(n) + suffix);
+  const Analysis a = analyse(cfg, cells);
+  for (const auto& v : a.variants) {
+    if (v.key.reference) continue;
+    for (const char* name : {"temperature_x", "pressure_xx_minus_yy"}) {
+      const Comparison* c = find_comparison(v, name);
+      ASSERT_NE(c, nullptr) << name;
+      EXPECT_FALSE(c->available);
+      EXPECT_FALSE(c->decision.tested());
+      EXPECT_EQ(c->note, "not measured");
+    }
+    if (v.key.rounds == 1) EXPECT_TRUE(find_comparison(v, "temperature")->decision.differs);
+  }
+  const std::string table = bilayer_differences_markdown(a, "gauss");
+  EXPECT_NE(table.find("| tea32(1) distance | P_xx − P_yy | – | – | – | – | – | not measured |"), std::string::npos)
+      << table;
+  EXPECT_TRUE(error_budget_csv(error_budget(a, 1.0)).find("pressure_xx_minus_yy") == std::string::npos);
+}
+
+// The error budget separates what cancels: the integrator heats the reference by 3 % and the generator's noise
+// cools by 3 %, so the variant reads k_BT = 1 while both parts of its error are far from 0.
+TEST(ErrorBudget, CancellingErrorsAreShownApart) {
+  const StudyConfig cfg = parse_config(kSixReplicas, "b.toml");
+  const std::vector<CellResult> cells = component_cells(cfg, 1.03, -0.03, 0.0);
+  const Analysis a = analyse(cfg, cells);
+  const std::vector<BudgetRow> rows = error_budget(a, 1.0);
+  const BudgetRow* t = nullptr;
+  for (const auto& r : rows)
+    if (r.variant->key.rounds == 1 && r.observable == "temperature") t = &r;
+  ASSERT_NE(t, nullptr);
+  EXPECT_NEAR(t->noise.value, -0.03, 0.003);
+  EXPECT_LT(t->noise.ci_high, 0.0);
+  EXPECT_NEAR(t->integrator.value, 0.03, 0.006);
+  EXPECT_GT(t->integrator.ci_low, 0.0);
+  EXPECT_LT(t->total.ci_low, 0.0);
+  EXPECT_GT(t->total.ci_high, 0.0);
+  EXPECT_NEAR(t->noise.value + t->integrator.value, t->total.value, 1e-12);
+  const std::string csv = error_budget_csv(rows);
+  EXPECT_EQ(csv.rfind("variant,seeding,distribution,feed,integrator,dt,replicas,observable,target,scale,noise_error,", 0),
+            0u);
+  EXPECT_NE(csv.find("tea32(1),distance,gauss,halves,,0.01,6,temperature,1,fraction of target,"), std::string::npos)
+      << csv;
+  EXPECT_NE(error_budget_markdown(rows).find("| tea32(1) | gauss | distance | T | -3."), std::string::npos);
+}
+
 // The membrane study's driver end to end on the real engine: 2 cells of 300 steps.
 TEST(BilayerStudyCli, RunResumeReport) {
   TempDir tmp;
@@ -251,6 +380,8 @@ TEST(BilayerStudyCli, RunResumeReport) {
   EXPECT_EQ(md.find("Pass fractions"), std::string::npos);  // no taps, no pass tables
   EXPECT_TRUE(fs::exists(out / "report" / "charts" / "bilayer_profiles_gauss.gp"));
   EXPECT_TRUE(fs::exists(out / "report" / "charts" / "bilayer_tension_gauss.gp"));
+  EXPECT_NE(md.find("## Error budget"), std::string::npos);
+  EXPECT_NE(read(out / "report" / "error_budget.csv").find(",pressure_xx_minus_yy,0,absolute,"), std::string::npos);
 
   // The CSV table holds each cell's own values (one replica: the mean is the cell's value).
   std::istringstream csv(read(out / "report" / "bilayer_table.csv"));
