@@ -120,6 +120,7 @@ fs::path write_bilayer_report(const StudyConfig& config, const std::vector<CellR
   detail::write_text(dir / "bilayer_table.csv", bilayer_table_csv(a));
   detail::write_text(dir / "bilayer_differences.csv", bilayer_differences_csv(a));
   detail::write_text(dir / "verdicts.csv", verdicts_csv(a));
+  detail::write_text(dir / "zeta.csv", zeta_csv(a));
   const std::vector<BudgetRow> budget = error_budget(a, config.scene.kT);
   detail::write_text(dir / "error_budget.csv", error_budget_csv(budget));
   detail::write_text(dir / "cells.csv", detail::cells_csv(cells));
@@ -194,7 +195,8 @@ fs::path write_bilayer_report(const StudyConfig& config, const std::vector<CellR
   md << detail::broken_cells_markdown(cells);
   md << "\n## Files\n\n"
      << "`summary.csv`, `verdicts.csv` (one row per generator × observable and per generator), `error_budget.csv`, "
-        "`bilayer_table.csv` (means and CIs), `bilayer_differences.csv` (differences and their tests), "
+        "`bilayer_table.csv` (means and CIs), `bilayer_differences.csv` (differences and their tests), `zeta.csv` "
+        "(the force's weighted ⟨ζ²⟩ and the temperature shift its effective power predicts beside the measured one), "
         "`cells.csv` (every scalar of every cell); charts in `charts/` (SVG, PNG and the gnuplot script of "
         "each); all data in `../study.h5` (each cell's profile/z, profile/head, profile/tail, profile/water).\n";
   detail::write_text(dir / "report.md", md.str());

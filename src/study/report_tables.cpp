@@ -317,16 +317,34 @@ std::string zeta_markdown(const Analysis& a) {
   return o.str();
 }
 
+namespace {
+
+// The temperature's measured shift against the reference as a fraction of the reference's value, with its 1σ and
+// 95 % CI: the water's relative comparison as it is, the membrane's paired (absolute) one divided by the
+// reference's mean. NaN without a comparison.
+struct MeasuredShift {
+  double shift = NAN, sigma = NAN, ci_low = NAN, ci_high = NAN;
+};
+MeasuredShift measured_temperature_shift(const VariantReport& v) {
+  const Comparison* t = find_observable(v, "temperature_mean");
+  if (!t) t = find_observable(v, "temperature");
+  if (!t || !(t->ref != 0)) return {};
+  const double scale = t->relative ? 1.0 : std::abs(t->ref);
+  return {(t->value - t->ref) / t->ref, t->sigma / scale, t->ci_low / scale, t->ci_high / scale};
+}
+
+}  // namespace
+
 std::string zeta_csv(const Analysis& a) {
   std::ostringstream o;
   o << "generator,rounds,distribution,feed,seeding,dt,replicas,zeta_n,zeta_mean,zeta_variance,variance_ci_low,"
        "variance_ci_high,second_moment,second_moment_ci_low,second_moment_ci_high,skewness,excess_kurtosis,p,p_adjusted,"
        "predicted_T_shift,power_predicted_T_shift,power_predicted_T_shift_se,power_lags,measured_T_shift,"
-       "measured_T_shift_sigma\n";
+       "measured_T_shift_sigma,measured_T_shift_ci_low,measured_T_shift_ci_high,integrator\n";
   for (const auto& v : a.variants) {
-    if (v.zeta.n == 0) continue;
-    const Comparison* t = find_observable(v, "temperature_mean");
-    const double shift = t && t->ref != 0 ? (t->value - t->ref) / t->ref : NAN;
+    // The membrane's cells hold no tapped ζ, only the force's weighted ⟨ζ²⟩ and its correlations.
+    if (v.zeta.n == 0 && !std::isfinite(v.noise_power.value)) continue;
+    const MeasuredShift m = measured_temperature_shift(v);
     o << v.key.generator << ',' << v.key.rounds << ',' << v.key.noise() << ',' << rng::to_string(v.key.feed) << ','
       << v.key.seeding_name() << ',' << num(v.key.dt) << ',' << v.cells.size() << ','
       << v.zeta.n << ',' << num(v.zeta.mean) << ',' << num(v.zeta.variance) << ',' << num(v.zeta.variance_ci.low)
@@ -334,8 +352,8 @@ std::string zeta_csv(const Analysis& a) {
       << num(v.zeta.second_moment_ci.low) << ',' << num(v.zeta.second_moment_ci.high) << ',' << num(v.zeta.skewness)
       << ',' << num(v.zeta.kurtosis) << ',' << num(v.zeta_decision.p) << ',' << num(v.zeta_decision.p_adjusted)
       << ',' << num(v.zeta_predicted_shift) << ',' << num(v.power_predicted_shift.value) << ','
-      << num(v.power_predicted_shift.se) << ',' << v.power_lags << ',' << num(shift) << ','
-      << num(t ? t->sigma : NAN) << '\n';
+      << num(v.power_predicted_shift.se) << ',' << v.power_lags << ',' << num(m.shift) << ',' << num(m.sigma) << ','
+      << num(m.ci_low) << ',' << num(m.ci_high) << ',' << detail::csv_quote(v.key.integrator) << '\n';
   }
   return o.str();
 }
