@@ -231,8 +231,13 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
       write(dir / f, v.nist_report.empty() ? nist_final_analysis_report(v, a.alpha) : v.nist_report);
       nist_files.push_back(f);
     }
+  const std::vector<RoundsRow> rounds = rounds_figures(a);
+  write(dir / "rounds_figures.csv", rounds_figures_csv(rounds));
   std::vector<std::string> made;
-  if (options.charts) made = write_charts(a, cells, dir / "charts", options.log);
+  if (options.charts) {
+    made = write_charts(a, cells, dir / "charts", options.log);
+    for (auto& n : write_rounds_charts(rounds, dir / "charts", options.log)) made.push_back(std::move(n));
+  }
   const auto have = [&](const std::string& n) { return std::find(made.begin(), made.end(), n) != made.end(); };
 
   std::ostringstream md;
@@ -305,6 +310,22 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
       if (have(n + d)) md << chart(n + d, std::string(alt) + ", " + d);
   }
 
+  md << "## The paper's figures against rounds (Figs. 3a, 4b, 4d, 5b, 6b)\n\n"
+     << "From the same cells: the kinetic temperature against the step (Fig. 3a; the replicas' mean series, "
+        "thinned to at most 1 000 points, for MT and each family's fewest and most rounds); T_x, T_y, T_z with "
+        "their replicas' 95 % CIs (4b; MT's as dashed levels); their shifts against MT (4d), the diffusion "
+        "coefficient's (5b) and g(r)'s (6b, the kept bin whose 95 % CI reaches furthest from 0), in %, with the "
+        "95 % CIs of the comparisons behind the verdicts. Data: `rounds_figures.csv`.\n\n";
+  bool any_rounds_chart = false;
+  for (const auto& d : dists)
+    for (const auto& [n, alt] : {std::pair{"temperature_series_", "Fig. 3a: kinetic temperature against the step"},
+                                 std::pair{"temperature_components_vs_rounds_", "Fig. 4b: T_x, T_y, T_z against rounds"},
+                                 std::pair{"temperature_components_shift_vs_rounds_", "Fig. 4d: their shifts against MT"},
+                                 std::pair{"diffusion_shift_vs_rounds_", "Fig. 5b: D's shift against MT"},
+                                 std::pair{"rdf_shift_vs_rounds_", "Fig. 6b: g(r)'s shift against MT"}})
+      if (have(n + d)) md << chart(n + d, std::string(alt) + ", " + d), any_rounds_chart = true;
+  if (!any_rounds_chart) md << "(no chart: charts were not requested, or the cells hold none of these data)\n\n";
+
   md << "## Correlations of ζ across neighbouring pairs and consecutive steps\n\n"
      << "A weak hash fed neighbouring inputs can pass χ² with correlated outputs. Pooled Pearson r of ζ between "
         "the tapped couples of neighbouring pair ids and between consecutive steps of one pair, the largest |r| "
@@ -352,7 +373,7 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
   md << detail::broken_cells_markdown(cells);
   md << "\n## Files\n\n"
      << "`verdicts.csv` (one row per variant × observable or test, and per variant), `error_budget.csv`, `summary.csv`, "
-        "`pass_table.csv`, `observables.csv`, `zeta.csv`, `cells.csv` (every scalar of every cell)";
+        "`pass_table.csv`, `observables.csv`, `zeta.csv`, `rounds_figures.csv`, `cells.csv` (every scalar of every cell)";
   for (const auto& f : nist_files) md << ", `" << f << "`";
   md << "; charts in `charts/` (SVG, PNG and the gnuplot script of each); all data in `../study.h5` (h5py: "
         "`h5py.File('study.h5')['cells']`).\n";

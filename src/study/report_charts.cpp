@@ -283,6 +283,8 @@ std::vector<std::string> write_charts(const Analysis& a, const std::vector<CellR
             "vpdf/mb");
     overlay(charts, a, dist, "msd", "Mean squared displacement", "τ", "MSD", "msd/tau", "msd/msd", true, true);
     overlay(charts, a, dist, "rdf", "Radial distribution function", "r", "g(r)", "rdf/r", "rdf/g", false, false);
+    overlay(charts, a, dist, "temperature_series", "Kinetic temperature against the step, replica mean", "step",
+            "k_BT (kinetic)", "series/step", "series/temperature", false, false);
   }
   const bool run = has_gnuplot();
   if (!run && log) *log << "[report] gnuplot not found: chart scripts written, not rendered\n";

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """tools/zeta_prediction.py: the agreement flag against hand-made zeta.csv rows, the notes for studies it cannot
-use, and (given a dpdrng binary) the table of a real CI-size study, study/ci.toml.
+use, and (given a dpdrng binary) a real CI-size study, study/ci.toml, run and reported: the tool's table, the
+report's error budget and its per-round figures (the paper's Figs. 3a, 4b, 4d, 5b, 6b).
 
 Usage: test_zeta_prediction.py SOURCE_DIR [DPDRNG SCRATCH_DIR]
 """
@@ -96,18 +97,25 @@ class HandMade(unittest.TestCase):
 
 @unittest.skipUnless(DPDRNG, "no dpdrng binary given")
 class CiStudy(unittest.TestCase):
-    """study/ci.toml run and reported: every variant has a prediction and a measured shift, so a flag."""
+    """study/ci.toml run and reported once: the tool's table, the error budget and the per-round figures."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.results = SCRATCH
+        shutil.rmtree(cls.results, ignore_errors=True)
+        os.makedirs(cls.results)
+        cls.out = os.path.join(cls.results, "ci")
+        subprocess.run([DPDRNG, "study", "run", os.path.join(SOURCE, "study", "ci.toml"), "--out", cls.out,
+                        "--threads", "2"], check=True, capture_output=True)
+        subprocess.run([DPDRNG, "study", "report", cls.out], check=True, capture_output=True)
+
+    def report_csv(self, name):
+        with open(os.path.join(self.out, "report", name), newline="") as f:
+            return list(csv.DictReader(f))
 
     def test_every_variant_is_judged(self):
-        results = SCRATCH
-        shutil.rmtree(results, ignore_errors=True)
-        os.makedirs(results)
-        out = os.path.join(results, "ci")
-        subprocess.run([DPDRNG, "study", "run", os.path.join(SOURCE, "study", "ci.toml"), "--out", out,
-                        "--threads", "2"], check=True, capture_output=True)
-        subprocess.run([DPDRNG, "study", "report", out], check=True, capture_output=True)
-        self.assertEqual(run_tool(results)[0], 0)
-        rows = table(results)
+        self.assertEqual(run_tool(self.results)[0], 0)
+        rows = table(self.results)
         # 2 generators x 2 round counts x 3 feeds
         self.assertEqual(len(rows), 12)
         for r in rows:
@@ -120,6 +128,46 @@ class CiStudy(unittest.TestCase):
             if r["variant"] == "tea64(1)":
                 self.assertEqual(r["agreement"], "fails", r)
                 self.assertIn("beyond 10 %", r["reason"])
+
+    def test_error_budget_adds_up_and_shows_the_integrator(self):
+        rows = self.report_csv("error_budget.csv")
+        kinds = {r["observable"] for r in rows}
+        self.assertEqual(kinds, {"temperature_mean", "temperature_conf_mean", "temperature_x_mean",
+                                 "temperature_y_mean", "temperature_z_mean"})
+        self.assertEqual(len(rows), 12 * 5)
+        for r in rows:
+            noise, integ, total = (float(r[k]) for k in ("noise_error", "integrator_error", "variant_error"))
+            self.assertAlmostEqual(noise + integ, total, delta=1e-5 * (1 + abs(total)), msg=r)
+            for part in ("noise", "integrator", "variant"):
+                self.assertLessEqual(float(r[part + "_ci_low"]), float(r[part + "_ci_high"]), r)
+        # GW-MVV at dt 0.04 heats the reference: its configurational temperature's integrator error is above 0
+        # (about +2 %) under every feed.
+        for r in rows:
+            if r["observable"] == "temperature_conf_mean":
+                self.assertGreater(float(r["integrator_error"]), 0.0, r)
+
+    def test_rounds_figures_hold_every_variant_with_cis(self):
+        rows = self.report_csv("rounds_figures.csv")
+        by_figure = {}
+        for r in rows:
+            by_figure.setdefault(r["figure"], []).append(r)
+            self.assertLessEqual(float(r["ci_low"]), float(r["value"]), r)
+            self.assertLessEqual(float(r["value"]), float(r["ci_high"]), r)
+        # 4b: 3 components of 12 variants and of the 3 references; 4d: 3 of 12; 5b and 6b: 12.
+        self.assertEqual(len(by_figure["4b"]), 3 * 15)
+        self.assertEqual(len(by_figure["4d"]), 3 * 12)
+        self.assertEqual(len(by_figure["5b"]), 12)
+        self.assertEqual(len(by_figure["6b"]), 12)
+        self.assertTrue(all(r["unit"] == "percent" for f in ("4d", "5b", "6b") for r in by_figure[f]))
+        # 64TEA(1) with distance seeding heats the components unequally (its hash reads dx first): T_x's CI lies
+        # above T_z's under the halves feed.
+        comp = {r["observable"]: r for r in by_figure["4b"] if r["variant"] == "tea64(1)" and r["feed"] == "halves"}
+        self.assertGreater(float(comp["temperature_x_mean"]["ci_low"]), float(comp["temperature_z_mean"]["ci_high"]))
+        charts = os.listdir(os.path.join(self.out, "report", "charts"))
+        for name in ("temperature_series_gauss.gp", "temperature_components_vs_rounds_gauss.gp",
+                     "temperature_components_shift_vs_rounds_gauss.gp", "diffusion_shift_vs_rounds_gauss.gp",
+                     "rdf_shift_vs_rounds_gauss.gp"):
+            self.assertIn(name, charts)
 
 
 if __name__ == "__main__":

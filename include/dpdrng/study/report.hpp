@@ -68,6 +68,22 @@ std::vector<BudgetRow> error_budget(const Analysis& a, double kT);
 std::string error_budget_csv(const std::vector<BudgetRow>& rows);
 std::string error_budget_markdown(const std::vector<BudgetRow>& rows);
 std::string error_budget_text(double kT);  // the table's definitions, for the report
+// The paper's per-round figures (report/rounds_figures.csv and charts *_vs_rounds_<noise>): per variant, "4b" the
+// replicas' mean T_x, T_y, T_z with 95 % CIs (the reference's too, as its level), "4d" their shifts against the
+// reference, "5b" the diffusion coefficient's shift, "6b" g(r)'s (the kept bin whose CI reaches furthest from 0),
+// shifts in % with the comparisons' 95 % CIs.
+struct RoundsRow {
+  std::string figure;  // "4b", "4d", "5b", "6b"
+  const VariantReport* variant = nullptr;
+  std::string observable;
+  double value = NAN, ci_low = NAN, ci_high = NAN;
+  std::string unit;  // "k_BT" or "percent"
+};
+std::vector<RoundsRow> rounds_figures(const Analysis& a);
+std::string rounds_figures_csv(const std::vector<RoundsRow>& rows);
+// One chart per figure and noise; returns the chart names made.
+std::vector<std::string> write_rounds_charts(const std::vector<RoundsRow>& rows, const std::filesystem::path& dir,
+                                             std::ostream* log);
 // Per generator × feed: which tests flag it (χ², lag-1 t, NIST, ⟨ζ²⟩, the physical observables).
 std::string flags_markdown(const Analysis& a);
 // The NIST reference suite's finalAnalysisReport layout for one variant's battery.
