@@ -292,8 +292,13 @@ void zeta_test(Analysis& a) {
     const VariantReport* ref = a.reference_for(v.key);
     if (ref && ref->zeta.second_moment > 0 && v.zeta.second_moment > 0)
       v.zeta_predicted_shift = v.zeta.second_moment / ref->zeta.second_moment - 1;
-    if (ref && ref->noise_power.value > 0 && v.noise_power.value > 0) {
-      const stats::NoisePower ratio = stats::predicted_temperature_ratio(v.noise_power, ref->noise_power);
+    // A reference that stores no ζ of its own (the mt19937 stream in cells mode, as in the membrane) draws
+    // independent unit-variance numbers: its effective power is 1 exactly.
+    const stats::NoisePower ideal{1.0, 0.0};
+    const stats::NoisePower* ref_power =
+        !ref ? nullptr : ref->noise_power.value > 0 ? &ref->noise_power : ref->cells.empty() ? nullptr : &ideal;
+    if (ref_power && v.noise_power.value > 0) {
+      const stats::NoisePower ratio = stats::predicted_temperature_ratio(v.noise_power, *ref_power);
       v.power_predicted_shift = {ratio.value - 1, ratio.se};
     }
   }

@@ -299,6 +299,28 @@ TEST(BilayerStudyAnalysis, CellsWithoutComponentsSayNotMeasured) {
   EXPECT_TRUE(error_budget_csv(error_budget(a, 1.0)).find("pressure_xx_minus_yy") == std::string::npos);
 }
 
+// The membrane's reference runs the mt19937 stream in cells mode and stores no ζ: its effective power is the
+// ideal 1 (independent unit-variance numbers), so the variants' weighted ⟨ζ²⟩ still predicts their shift.
+TEST(BilayerStudyAnalysis, AReferenceWithoutZetaHasTheIdealPower) {
+  const StudyConfig cfg = parse_config(kSixReplicas, "b.toml");
+  std::vector<CellResult> cells = component_cells(cfg, 1.0, -0.03, 0.0);
+  for (auto& c : cells)
+    if (!c.cell.reference) {
+      c.scalars["zeta_weighted_second_moment_mean"] = c.cell.rounds == 1 ? 0.96 : 1.0;
+      c.scalars["zeta_weighted_second_moment_sem"] = 0.001;
+    }
+  const Analysis a = analyse(cfg, cells);
+  for (const auto& v : a.variants) {
+    if (v.key.reference) {
+      EXPECT_FALSE(std::isfinite(v.power_predicted_shift.value));
+      continue;
+    }
+    EXPECT_NEAR(v.power_predicted_shift.value, v.key.rounds == 1 ? -0.04 : 0.0, 1e-12);
+    EXPECT_NEAR(v.power_predicted_shift.se, 0.001 / std::sqrt(6.0), 1e-9);
+  }
+  EXPECT_NE(zeta_csv(a).find("tea32,1,gauss,halves,distance,0.01,6,0,"), std::string::npos) << zeta_csv(a);
+}
+
 // The error budget separates what cancels: the integrator heats the reference by 3 % and the generator's noise
 // cools by 3 %, so the variant reads k_BT = 1 while both parts of its error are far from 0.
 TEST(ErrorBudget, CancellingErrorsAreShownApart) {
