@@ -166,8 +166,8 @@ TEST(CliSimulate, TinyBilayerRunGivesItsJsonAlikeFromEitherCommand) {
       "membrane_tension_without_bend_virial", "membrane_tension_without_bond_virial", "momentum_drift_per_bead",
       "momentum_final", "nematic_order", "nematic_order_sem", "pairs", "particles", "pressure_diag", "pressure_mean",
       "pressure_sem",
-      "pressure_xx_mean", "pressure_xx_sem", "pressure_yy_mean", "pressure_yy_sem", "pressure_zz_mean",
-      "pressure_zz_sem", "scene", "seeding", "status", "steps_done", "tail_order", "tail_order_sem",
+      "pressure_xx_mean", "pressure_xx_sem", "pressure_xx_minus_yy_mean", "pressure_xx_minus_yy_sem", "pressure_yy_mean",
+      "pressure_yy_sem", "pressure_zz_mean", "pressure_zz_sem", "scene", "seeding", "status", "steps_done", "tail_order", "tail_order_sem",
       "tail_order_stat", "temperature", "temperature_mean", "temperature_sem", "tension", "thickness", "timings"};
   EXPECT_EQ(keys(a), want);
   EXPECT_TRUE(keys(a.at("timings")).count("bonded_s"));
