@@ -194,6 +194,7 @@ nlohmann::json StudyConfig::canonical() const {
   if (tests.error_control != ErrorControl::study) j["tests"]["error_control"] = to_string(tests.error_control);
   if (feeds != std::vector<rng::Feed>{rng::Feed::halves}) j["feeds"] = names_of(feeds);
   if (!integrators.empty()) j["integrators"] = integrators;
+  if (!reference_gammas.empty()) j["reference_gammas"] = reference_gammas;
   if (scene.time > 0) j["scene"]["time"] = scene.time, j["scene"]["equilibrate_time"] = scene.equilibrate_time;
   return j;
 }
@@ -228,6 +229,11 @@ StudyConfig parse_config(const std::string& toml_text, const std::string& origin
   c.seedings = valid_seedings(sw, "seedings", c.seedings);
   c.feeds = valid_feeds(sw, "feeds", c.feeds);
   if (sw.get("integrators")) c.integrators = valid_integrators(sw, "integrators", sw.strings("integrators", {}));
+  if (sw.get("reference_gammas")) {
+    c.reference_gammas = sw.numbers("reference_gammas", {}, 0, 1e6, true);
+    if (c.reference_gammas.empty()) sw.fail("reference_gammas", "needs at least one value (or leave the key out)");
+    check_unique(sw, "reference_gammas", c.reference_gammas);
+  }
   const toml::array* gens = sw.array_of_tables("generator");
   if (!gens || gens->empty()) sw.fail("generator", "at least one [[sweep.generator]] is required");
   for (std::size_t k = 0; k < gens->size(); ++k) {
@@ -305,6 +311,12 @@ StudyConfig parse_config(const std::string& toml_text, const std::string& origin
   sc.finish();
   if (bilayer && !c.integrators.empty())
     throw InputError(origin + ": sweep.integrators: the bilayer scene runs MVV at its lambda only (remove the key)");
+  if (bilayer && !c.reference_gammas.empty())
+    throw InputError(origin + ": sweep.reference_gammas: is for the water scene (remove the key)");
+  for (double g : c.reference_gammas)
+    if (g == s.gamma)
+      throw InputError(origin + ": sweep.reference_gammas: " + exact_decimal(g) +
+                       " is the scene's gamma, whose cells run anyway (remove it)");
 
   Section te = top.sub("tests");
   auto& t = c.tests;

@@ -89,6 +89,10 @@ struct StudyConfig {
   std::vector<rng::Seeding> seedings{rng::Seeding::distance};
   // [sweep] integrators ("mvv:<λ>", "shardlow"; sweep.hpp); empty: MVV at the scene's λ, not a factor.
   std::vector<std::string> integrators;
+  // [sweep] reference_gammas: friction coefficients beside the scene's γ at which the reference alone runs (its
+  // first noise, every integrator, Δt and replica): a friction series that needs no generator, e.g. γ = 4.5
+  // against Groot & Warren's (1997) runs. Empty: none. Water scene only.
+  std::vector<double> reference_gammas;
   SceneParams scene;
   TestParams tests;
   CostParams cost;
