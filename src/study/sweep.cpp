@@ -95,8 +95,8 @@ std::vector<Cell> enumerate_cells(const StudyConfig& config) {
   const std::vector<std::string> scene_integrator{""};
   for (double dt : config.scene.dt)
     for (const auto& integ : config.integrators.empty() ? scene_integrator : config.integrators) {
-      for (int rep = 0; rep < config.reference_replica_count(); ++rep) {
-        const bool reference_alone = rep >= config.replicas;  // the reference's extra replicas
+      for (int rep = 0; rep < config.reference_replicas_at(dt); ++rep) {
+        const bool reference_alone = rep >= config.replicas_at(dt);  // the reference's extra replicas
         // A replica's seed sets the initial state (and the reference's stream); distinct per replica, shared
         // across generators.
         const std::uint64_t seed = rng::splitmix64_mix(config.seed * 0x9e3779b97f4a7c15ull + std::uint64_t(rep));

@@ -193,6 +193,7 @@ TEST(StabilityCli, CiStudyReportsEveryCell) {
     }
   }
   EXPECT_EQ(gamma_points, 5u * 4u);
+  for (const auto& p : a.points) EXPECT_EQ(p.replicas, p.dt == 0.05 ? 3u : 2u) << p.method() << " at " << p.dt;
   const std::string frontier_csv_text = read(out / "report" / "frontier.csv");
   for (const auto& m : stability_methods(a)) {
     const Frontier f = accuracy_frontier(a, m, Thermometer::kinetic, 0.01);

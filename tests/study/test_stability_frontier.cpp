@@ -239,4 +239,41 @@ TEST(StabilityFrontier, ReferenceGammasAddReferenceCellsWithExactIds) {
             std::string::npos);
 }
 
+// More replicas at chosen Δt: every variant and the reference there, the first replicas' cells unchanged, the
+// other Δt at `replicas`; a Δt not in the scene or a count not above `replicas` is refused naming the key.
+TEST(StabilityFrontier, ExtraReplicasOnlyAtTheirDt) {
+  const std::string base = StudyText{.name = "s",
+                                     .sweep_extra = "integrators = [\"mvv:0.65\", \"pnhln:10\"]\n",
+                                     .generators = {{.rounds = "[1]"}},
+                                     .scene = "particles = 64\ndt = [0.02, 0.04]\ntime = 2.0\n",
+                                     .tests = "chi2_steps = 0\nttest_pairs = 0\n"}
+                               .text();
+  const StudyConfig plain = parse_config(base, "cfg.toml");
+  const auto extra = [&](const std::string& table) {
+    return config_text::with(base, "integrators =", "extra_replicas = " + table + "\nintegrators =");
+  };
+  const StudyConfig more = parse_config(extra(R"({ "0.04" = 5 })"), "cfg.toml");
+  EXPECT_FALSE(plain.canonical().contains("extra_replicas"));
+  EXPECT_EQ(more.canonical()["extra_replicas"], nlohmann::json({{"0.04", 5}}));
+  EXPECT_EQ(more.replicas_at(0.02), 2);
+  EXPECT_EQ(more.replicas_at(0.04), 5);
+  const auto a = enumerate_cells(plain), b = enumerate_cells(more);
+  // At Δt 0.04, 3 more replicas of mvv:0.65 (MT19937 and 32TEA(1)) and of pnhln (MT19937 only).
+  ASSERT_EQ(b.size(), a.size() + 3u * (2u + 1u));
+  std::map<double, int> top;
+  for (const auto& cell : b) {
+    top[cell.dt] = std::max(top[cell.dt], cell.replica);
+    if (cell.replica < 2) {
+      EXPECT_TRUE(std::any_of(a.begin(), a.end(), [&](const Cell& x) { return x.id() == cell.id(); })) << cell.id();
+    }
+  }
+  EXPECT_EQ(top[0.02], 1);
+  EXPECT_EQ(top[0.04], 4);
+  EXPECT_NE(error_of(extra(R"({ "0.03" = 5 })")).find("sweep.extra_replicas: 0.03 is not one of scene.dt"),
+            std::string::npos);
+  EXPECT_NE(error_of(extra(R"({ "0.04" = 2 })")).find("sweep.extra_replicas.0.04: out of range"), std::string::npos)
+      << error_of(extra(R"({ "0.04" = 2 })"));
+  EXPECT_NE(error_of(extra(R"({ "x" = 4 })")).find("sweep.extra_replicas.x"), std::string::npos);
+}
+
 }  // namespace dpdrng_test::study_test_stability_frontier
