@@ -206,6 +206,30 @@ std::string crossing_markdown(const std::vector<CrossingRow>& rows) {
   return o.str();
 }
 
+std::string gamma_series_markdown(const StabilityAnalysis& a, double tolerance) {
+  std::ostringstream o;
+  bool any = false;
+  for (const auto& m : stability_methods(a)) {
+    const StabilityPoint* p = nullptr;
+    for (const auto& q : a.points)
+      if (q.method() == m) p = &q;
+    if (!p || p->gamma == 0) continue;
+    if (!any)
+      o << "| integrator | γ | k_BT frontier | T_conf frontier | at the scene's γ: k_BT | T_conf |\n"
+           "|---|---|---|---|---|---|\n";
+    any = true;
+    StabilityPoint same = *p;
+    same.gamma = 0;
+    const std::string base = same.method();
+    o << "| " << (p->integrator.empty() ? "mvv" : p->integrator) << " | " << num(p->gamma) << " | "
+      << bracket_text(accuracy_frontier(a, m, Thermometer::kinetic, tolerance)) << " | "
+      << bracket_text(accuracy_frontier(a, m, Thermometer::configurational, tolerance)) << " | "
+      << bracket_text(accuracy_frontier(a, base, Thermometer::kinetic, tolerance)) << " | "
+      << bracket_text(accuracy_frontier(a, base, Thermometer::configurational, tolerance)) << " |\n";
+  }
+  return o.str();
+}
+
 std::string accuracy_markdown(const StabilityAnalysis& a) {
   std::ostringstream o;
   o << "| method | Δt | stable | ⟨k_BT⟩ ± 95 % | \\|⟨k_BT⟩ − 1\\| | ⟨T_conf⟩ ± 95 % | P_c (err vs 23.64) | P_c err "
@@ -329,6 +353,17 @@ fs::path write_stability_report(const StudyConfig& config, const std::vector<Cel
      << shardlow_against_mvv065(ranks);
   if (have("accuracy_cost_integrators"))
     md << detail::chart_link("accuracy_cost_integrators", "integrators: temperature error against cost");
+
+  if (const std::string g = gamma_series_markdown(a, kTolerance); !g.empty())
+    md << "## The friction series\n\n"
+       << "The reference generator alone at the friction of `[sweep] reference_gammas`, beside the same integrator "
+          "at the scene's γ = "
+       << num(s.gamma)
+       << " (±" << num(100 * kTolerance)
+       << " % brackets as above). Groot & Warren (1997) chose λ = 0.65 from runs at γ = 4.5 (σ = 3); their "
+          "temperatures are not transcribed here, so the comparison with their figure is left to the reader. From "
+          "`frontier.csv`.\n\n"
+       << g << "\n";
 
   md << "## The crossing: noise error against integrator error\n\n"
      << "For every integrator that draws pair noise (not PNHLN) at γ = " << num(s.gamma)

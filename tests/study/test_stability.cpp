@@ -166,7 +166,7 @@ TEST(StabilityCli, CiStudyReportsEveryCell) {
   ASSERT_GT(unstable, 0u) << "MVV at Δt 0.5 should blow up";
   ASSERT_EQ(run_cli("study report '" + out.string() + "'", &err), 0) << err;
   const std::string md = read(out / "report" / "report.md");
-  for (const char* section : {"## Stability map", "## Accuracy frontiers", "## The integrators ranked",
+  for (const char* section : {"## Stability map", "## Accuracy frontiers", "## The integrators ranked", "## The friction series",
                               "## The crossing: noise error against integrator error",
                               "## Accuracy against cost per unit of simulated time", "## Unstable and failed cells"})
     EXPECT_NE(md.find(section), std::string::npos) << section;
@@ -200,6 +200,11 @@ TEST(StabilityCli, CiStudyReportsEveryCell) {
     EXPECT_NE(md.find("| " + m + " | " + bracket_text(f) + " |"), std::string::npos) << m;
     EXPECT_NE(frontier_csv_text.find(m + ",kinetic,"), std::string::npos) << m;
   }
+  // The friction series row of λ = 0.65: its brackets beside the scene's γ ones, from the same frontiers.
+  const std::string g45 = "| mvv:0.65 | 4.5 | " +
+                          bracket_text(accuracy_frontier(a, "mvv:0.65 mt19937 gauss γ4.5", Thermometer::kinetic, 0.01)) +
+                          " | ";
+  EXPECT_NE(md.find(g45), std::string::npos) << g45;
   const auto ranks = rank_integrators(a, 0.01);
   ASSERT_EQ(ranks.size(), 5u);
   for (const auto& r : ranks) {

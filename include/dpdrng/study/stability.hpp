@@ -122,6 +122,9 @@ std::string frontier_markdown(const StabilityAnalysis& a, double tolerance);  //
 std::string ranking_markdown(const std::vector<IntegratorRank>& r, double tolerance);
 std::string crossing_markdown(const std::vector<CrossingRow>& rows);
 std::string accuracy_markdown(const StabilityAnalysis& a);       // every point: accuracy and cost
+// The friction series beside the scene's γ: per reference_gammas method, its k_BT and T_conf brackets and those of
+// the same integrator and noise with the reference at the scene's γ ("" when the study has no such series).
+std::string gamma_series_markdown(const StabilityAnalysis& a, double tolerance);
 // Accuracy against cost per unit simulated time (one curve per method; blown-up points drawn on the top edge), the
 // integrators' panel (cost against signed temperature error with CIs), the crossing (k_BT and T_conf against Δt
 // per integrator) and the fraction stable against Δt; returns the chart names made.
