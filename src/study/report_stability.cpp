@@ -262,14 +262,14 @@ std::string shardlow_against_mvv065(const std::vector<IntegratorRank>& ranks) {
   const Frontier &f = sh->kinetic, &g = mv->kinetic;
   std::string verdict;
   if (std::isfinite(f.outside) && std::isfinite(g.inside) && f.outside <= g.inside)
-    verdict = "lies below it: Shardlow's splitting leaves ±1 % at a smaller Δt than GW-MVV with λ = 0.65";
+    verdict = "Shardlow's lies below: its splitting leaves ±1 % at a smaller Δt than GW-MVV with λ = 0.65";
   else if (std::isfinite(g.outside) && std::isfinite(f.inside) && g.outside <= f.inside)
-    verdict = "lies above it";
+    verdict = "Shardlow's lies above";
   else
-    verdict = "overlaps it: the CIs do not order the two";
+    verdict = "the two overlap: the CIs do not order them";
   return "Shardlow's k_BT frontier (" + bracket_text(f) + ") against GW-MVV λ = 0.65's (" + bracket_text(g) +
-         ") with the reference generator: it " + verdict + ". λ = 0.65 is Groot & Warren's choice because its velocity prediction cancels part of the integrator's "
-         "heating at their γ = 4.5; the γ = 4.5 rows of the frontier table show whether that cancellation holds "
+         ") with the reference generator: " + verdict + ". λ = 0.65 is Groot & Warren's choice because its velocity prediction cancels part of the integrator's "
+         "heating at their γ = 4.5; the friction series below shows whether that cancellation holds "
          "there, and the scene's γ rows whether it survives the larger friction.\n\n";
 }
 

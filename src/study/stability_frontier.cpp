@@ -124,7 +124,8 @@ std::vector<IntegratorRank> rank_integrators(const StabilityAnalysis& a, double 
       break;
     }
   for (auto& r : out) r.relative_step_cost = r.step_seconds / base;
-  // Larger inside Δt first; without one, the larger first outside Δt (the scheme fails later); then the cheaper.
+  // Larger inside Δt first; then the larger first outside Δt (the scheme fails later); then the cheaper per unit
+  // of simulated time, and per step.
   const auto key = [](const IntegratorRank& r, bool outside) {
     const Frontier& f = r.ranked_by == Thermometer::kinetic ? r.kinetic : r.configurational;
     const double d = outside ? f.outside : f.inside;
@@ -135,7 +136,10 @@ std::vector<IntegratorRank> rank_integrators(const StabilityAnalysis& a, double 
     if (key(x, true) != key(y, true)) return key(x, true) > key(y, true);
     const double cx = std::isfinite(x.seconds_per_time) ? x.seconds_per_time : INFINITY;
     const double cy = std::isfinite(y.seconds_per_time) ? y.seconds_per_time : INFINITY;
-    return cx < cy;
+    if (cx != cy) return cx < cy;
+    const double sx = std::isfinite(x.step_seconds) ? x.step_seconds : INFINITY;
+    const double sy = std::isfinite(y.step_seconds) ? y.step_seconds : INFINITY;
+    return sx < sy;
   });
   return out;
 }
