@@ -77,7 +77,7 @@ void merge(const std::vector<std::string>& dirs, const std::string& out_dir) {
 }
 
 struct CalibrateArgs {
-  std::string config, out, replicas, variance = "0.0025,0.005,0.01,0.02", lag1, mean, shard = "1/1";
+  std::string config, out, replicas, variance = "0.0025,0.005,0.01,0.02", lag1, mean, aniso, shard = "1/1";
   int null_studies = 100, power_studies = 10, threads = 1;
   bool json = false, no_charts = false;
 };
@@ -122,6 +122,7 @@ void calibrate_cmd(const CalibrateArgs& a) {
   plan.variance = real_list(a.variance, "--variance", {-1.0, 1e6, true, false});
   plan.lag1 = real_list(a.lag1, "--lag1", {-0.5, 0.5, false, false});
   plan.mean = real_list(a.mean, "--mean", {-1e6, 1e6, false, false});
+  plan.aniso = real_list(a.aniso, "--aniso", {-0.5, 1.0, true, true});
   plan.shard = parse_shard(a.shard);
   const StudyConfig pool = calibration_pool(config, plan);  // every input checked before anything is written
   validate_scene(pool);
@@ -199,7 +200,7 @@ const bool registered = register_command(60, [](CLI::App& root) {
   auto ca = std::make_shared<CalibrateArgs>();
   CLI::App* k = g.add_subcommand("calibrate", "measure the verdicts' false-alarm rate and their power against injected defects");
   k->footer("Runs null studies (MT19937 against philox4x32(10), threefry2x64(20), splitmix64) and power studies\n"
-            "(plus one defect:variance=E / lag1=R / mean=M generator) on the config's scene, tests and error\n"
+            "(plus one defect:variance=E / lag1=R / mean=M / aniso=K generator) on the config's scene, tests and error\n"
             "control, one cell at a time; resumes from OUT/pool. Writes OUT/summary.md, calibration.json,\n"
             "false_alarms.csv, power.csv and charts/. A study report reads the detection limit from a\n"
             "calibration.json whose scene and tests match its config. See study/README.md.");
@@ -212,6 +213,7 @@ const bool registered = register_command(60, [](CLI::App& root) {
   k->add_option("--variance", ca->variance, "variance defects ε, comma-separated ('' for none)")->capture_default_str();
   k->add_option("--lag1", ca->lag1, "lag-1 correlation defects ρ (run in pair-step seeding)");
   k->add_option("--mean", ca->mean, "mean-shift defects μ");
+  k->add_option("--aniso", ca->aniso, "anisotropic defects κ: ζ's variance × (1 + κ(3cos²θ − 1)), θ the pair's angle to z");
   add_integer(*k, "--threads,-t", ca->threads, "threads inside each cell (cells run one at a time)", {1, 1024});
   k->add_option("--shard", ca->shard,
                 "compute only shard k of N of the pool's cells (round-robin), e.g. 1/2: shards share --out, and "

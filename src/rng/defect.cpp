@@ -10,7 +10,8 @@ namespace dpdrng::rng {
 bool is_defect(std::string_view name) { return name == "defect" || name.starts_with(kDefectPrefix); }
 
 std::string defect_syntax() {
-  return "defect:variance=E,lag1=R,mean=M,base=philox4x32 (each optional; E > -1, |R| <= 1/2, M finite)";
+  return "defect:variance=E,lag1=R,mean=M,aniso=K,base=philox4x32 (each optional; E > -1, |R| <= 1/2, M finite, "
+         "-1/2 < K < 1; aniso needs distance seeding)";
 }
 
 namespace {
@@ -32,7 +33,7 @@ DefectParams parse_defect(std::string_view name) {
   if (name == "defect") return p;
   std::string_view rest = name.substr(kDefectPrefix.size());
   if (rest.empty()) fail(name, "no parameters after 'defect:'");
-  bool seen[4] = {false, false, false, false};
+  bool seen[5] = {false, false, false, false, false};
   for (;;) {
     const std::size_t comma = rest.find(',');
     const std::string_view item = rest.substr(0, comma);
@@ -47,6 +48,8 @@ DefectParams parse_defect(std::string_view name) {
       k = 1, p.lag1 = lag1_weight(parse_real(value, what, {-0.5, 0.5, false, false}));
     } else if (key == "mean") {
       k = 2, p.mean = parse_real(value, what, {-1e6, 1e6, false, false});
+    } else if (key == "aniso") {
+      k = 4, p.aniso = parse_real(value, what, {-0.5, 1.0, true, true});
     } else if (key == "base") {
       k = 3;
       if (value != "philox4x32" && value != "philox4x32(10)")

@@ -78,8 +78,12 @@ void throw_counter_not_pair_seeding() {
 }
 
 void check_defect_seeding(const GeneratorSpec& spec, Seeding seeding) {
-  if (is_defect(spec.name) && seeding == Seeding::distance && parse_defect(spec.name).lag1 != 0)
+  if (!is_defect(spec.name)) return;
+  const DefectParams p = parse_defect(spec.name);
+  if (seeding == Seeding::distance && p.lag1 != 0)
     throw InputError("'" + spec.name + "': a lag-1 defect correlates a pair's steps; use seeding pair-step");
+  if (seeding != Seeding::distance && p.aniso != 0)
+    throw InputError("'" + spec.name + "': an anisotropic defect reads the pair's separation; use seeding distance");
 }
 
 Seeding parse_seeding(std::string_view name) {

@@ -219,7 +219,9 @@ void read_nist(VariantReport& v, double alpha) {
 std::vector<VariantReport> group(const StudyConfig& config, const std::vector<CellResult>& cells) {
   // Variants in sweep order (reference first), whatever order the cells were stored in.
   std::vector<VariantKey> order;
+  // The reference_gammas series has no variants to judge: it belongs to the stability report alone.
   for (const auto& c : enumerate_cells(config)) {
+    if (c.gamma > 0) continue;
     const VariantKey k = variant_of(c);
     if (std::find(order.begin(), order.end(), k) == order.end()) order.push_back(k);
   }
@@ -229,7 +231,7 @@ std::vector<VariantReport> group(const StudyConfig& config, const std::vector<Ce
     VariantReport v;
     v.key = k;
     for (const auto& c : cells)
-      if (variant_of(c.cell) == k) (c.status == CellStatus::ok ? v.cells : v.broken).push_back(&c);
+      if (c.cell.gamma == 0 && variant_of(c.cell) == k) (c.status == CellStatus::ok ? v.cells : v.broken).push_back(&c);
     out.push_back(std::move(v));
   }
   return out;

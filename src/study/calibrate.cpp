@@ -35,6 +35,7 @@ std::vector<Defect> defects_of(const CalibrationPlan& plan) {
   for (double e : plan.variance) d.push_back({"variance", e});
   for (double r : plan.lag1) d.push_back({"lag1", r});
   for (double m : plan.mean) d.push_back({"mean", m});
+  for (double k : plan.aniso) d.push_back({"aniso", k});
   return d;
 }
 
@@ -211,6 +212,7 @@ StudyConfig calibration_pool(const StudyConfig& config, const CalibrationPlan& p
     GeneratorEntry e{d.name(), {1}, {}};
     rng::validated({e.name, 0});  // InputError for an out-of-range size
     if (d.kind == "lag1") e.seedings = {rng::Seeding::pair_step};  // the step must be in the hash input
+    if (d.kind == "aniso") e.seedings = {rng::Seeding::distance};  // the separation must be
     p.generators.push_back(e);
   }
   p.replicas = std::max(plan.null_studies * config.replicas, defect_replicas(config, plan));

@@ -44,6 +44,7 @@ std::string rate_text(const Rate& r) {
 const char* kind_what(const std::string& kind) {
   if (kind == "variance") return "ε (⟨ζ²⟩ = 1 + ε)";
   if (kind == "lag1") return "ρ (lag-1 correlation)";
+  if (kind == "aniso") return "κ (variance × (1 + κ(3cos²θ − 1)))";
   return "μ (mean shift)";
 }
 

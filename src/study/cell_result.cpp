@@ -74,6 +74,7 @@ void write_cell(hid_t g, const CellResult& r) {
   h5::write_attribute(g, "cell.dt", c.dt);
   // Only when the sweep names one: cells of studies without the factor keep their records byte for byte.
   if (!c.integrator.empty()) h5::write_attribute(g, "cell.integrator", c.integrator);
+  if (c.gamma > 0) h5::write_attribute(g, "cell.gamma", c.gamma);
   h5::write_attribute(g, "cell.replica", std::int64_t{c.replica});
   h5::write_attribute(g, "cell.reference", std::int64_t{c.reference});
   h5::write_attribute(g, "cell.nist", std::int64_t{c.nist});
@@ -107,6 +108,7 @@ CellResult read_cell(hid_t g) {
   if (a.count("cell.feed")) c.feed = rng::parse_feed(get<std::string>(a, "cell.feed"));
   c.dt = get<double>(a, "cell.dt");
   if (a.count("cell.integrator")) c.integrator = get<std::string>(a, "cell.integrator");
+  if (a.count("cell.gamma")) c.gamma = get<double>(a, "cell.gamma");
   c.replica = static_cast<int>(get<std::int64_t>(a, "cell.replica"));
   c.reference = get<std::int64_t>(a, "cell.reference") != 0;
   c.seeding = read_seeding(get<std::string>(a, "cell.seeding"), c.reference);

@@ -194,6 +194,12 @@ nlohmann::json StudyConfig::canonical() const {
   if (tests.error_control != ErrorControl::study) j["tests"]["error_control"] = to_string(tests.error_control);
   if (feeds != std::vector<rng::Feed>{rng::Feed::halves}) j["feeds"] = names_of(feeds);
   if (!integrators.empty()) j["integrators"] = integrators;
+  if (!reference_gammas.empty()) j["reference_gammas"] = reference_gammas;
+  if (!extra_replicas.empty()) {
+    nlohmann::json e = nlohmann::json::object();
+    for (const auto& [dt, n] : extra_replicas) e[exact_decimal(dt)] = n;
+    j["extra_replicas"] = e;
+  }
   if (scene.time > 0) j["scene"]["time"] = scene.time, j["scene"]["equilibrate_time"] = scene.equilibrate_time;
   return j;
 }
@@ -228,6 +234,22 @@ StudyConfig parse_config(const std::string& toml_text, const std::string& origin
   c.seedings = valid_seedings(sw, "seedings", c.seedings);
   c.feeds = valid_feeds(sw, "feeds", c.feeds);
   if (sw.get("integrators")) c.integrators = valid_integrators(sw, "integrators", sw.strings("integrators", {}));
+  if (sw.get("reference_gammas")) {
+    c.reference_gammas = sw.numbers("reference_gammas", {}, 0, 1e6, true);
+    if (c.reference_gammas.empty()) sw.fail("reference_gammas", "needs at least one value (or leave the key out)");
+    check_unique(sw, "reference_gammas", c.reference_gammas);
+  }
+  if (sw.get("extra_replicas")) {
+    Section er = sw.sub("extra_replicas");
+    const toml::node* n = sw.get("extra_replicas");
+    for (const auto& [k, v] : *n->as_table()) {
+      const std::string key(k.str());
+      const double dt = named(er, key, [&] { return parse_real(key, "the Δt"); });
+      c.extra_replicas[dt] = static_cast<int>(er.integer(key, 0, c.replicas + 1, 1000));
+    }
+    if (c.extra_replicas.empty()) sw.fail("extra_replicas", "needs at least one Δt (or leave the key out)");
+    er.finish();
+  }
   const toml::array* gens = sw.array_of_tables("generator");
   if (!gens || gens->empty()) sw.fail("generator", "at least one [[sweep.generator]] is required");
   for (std::size_t k = 0; k < gens->size(); ++k) {
@@ -305,6 +327,15 @@ StudyConfig parse_config(const std::string& toml_text, const std::string& origin
   sc.finish();
   if (bilayer && !c.integrators.empty())
     throw InputError(origin + ": sweep.integrators: the bilayer scene runs MVV at its lambda only (remove the key)");
+  if (bilayer && !c.reference_gammas.empty())
+    throw InputError(origin + ": sweep.reference_gammas: is for the water scene (remove the key)");
+  for (const auto& [dt, n] : c.extra_replicas)
+    if (std::find(s.dt.begin(), s.dt.end(), dt) == s.dt.end())
+      throw InputError(origin + ": sweep.extra_replicas: " + exact_decimal(dt) + " is not one of scene.dt");
+  for (double g : c.reference_gammas)
+    if (g == s.gamma)
+      throw InputError(origin + ": sweep.reference_gammas: " + exact_decimal(g) +
+                       " is the scene's gamma, whose cells run anyway (remove it)");
 
   Section te = top.sub("tests");
   auto& t = c.tests;

@@ -19,7 +19,7 @@ template <class EngineConfig>
 void set_run(EngineConfig& c, const Cell& cell, const SceneParams& s, int threads) {
   c.particles = s.particles;
   c.kT = s.kT;
-  c.gamma = s.gamma;
+  c.gamma = cell.gamma > 0 ? cell.gamma : s.gamma;
   c.lambda = s.lambda;
   c.dt = cell.dt;
   c.steps = s.steps_at(cell.dt);

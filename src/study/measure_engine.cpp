@@ -4,6 +4,7 @@
 #include <set>
 
 #include "dpdrng/common/error.hpp"
+#include "dpdrng/common/machine.hpp"
 #include "dpdrng/rng/registry.hpp"
 #include "dpdrng/stats/moments.hpp"
 #include "dpdrng/study/measure.hpp"
@@ -98,6 +99,8 @@ void record_costs(const dpd::Timings& t, std::int64_t steps_done, CellResult& ou
   auto& sc = out.scalars;
   sc["cost.run_seconds"] = t.total_s;
   sc["cost.step_seconds"] = t.per_step_s;
+  // The costs are this CPU's: a report that ranks by them names it.
+  out.notes["cost.cpu"] = cpu_model();
   sc["cost.ns_per_number"] = t.ns_per_number;
   sc["cost.rng_share"] = t.rng_share_estimate;
   sc["cost.particle_steps_per_second"] = t.particle_steps_per_s;

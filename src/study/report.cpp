@@ -42,6 +42,11 @@ std::string p_text(double p) {
   return fmt("%.2g", p);
 }
 
+std::string p_csv(double p) {
+  if (std::isfinite(p) && p < kPFloor) return "<1e-12";
+  return num(p);
+}
+
 std::vector<std::string> distributions_of(const Analysis& a) {
   std::vector<std::string> dists;
   for (const auto& v : a.variants)

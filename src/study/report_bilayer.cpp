@@ -104,8 +104,8 @@ std::string bilayer_differences_csv(const Analysis& a) {
         << detail::num(c.value_sd) << ',' << c.n_ref << ',' << detail::num(c.ref) << ',' << detail::num(c.ref_sd)
         << ',' << c.n_pairs << ',' << detail::num(c.paired ? c.diff : c.error_rate) << ','
         << detail::num(c.diff_ci) << ',' << detail::num(c.sigma) << ',' << c.test << ','
-        << detail::num(c.statistic) << ',' << detail::num(c.dof) << ',' << detail::num(c.decision.p) << ','
-        << detail::num(c.decision.p_adjusted) << ',' << int(c.decision.differs) << '\n';
+        << detail::num(c.statistic) << ',' << detail::num(c.dof) << ',' << detail::p_csv(c.decision.p) << ','
+        << detail::p_csv(c.decision.p_adjusted) << ',' << int(c.decision.differs) << '\n';
   return o.str();
 }
 

@@ -18,6 +18,8 @@ std::string fmt(const char* f, double x);                                   // p
 // A P-value for reading: "%.2g", "< 1e-12" below the floor (no error model here supports smaller), "–" for NaN.
 inline constexpr double kPFloor = 1e-12;
 std::string p_text(double p);
+// A P-value for a CSV cell: "%.6g", "<1e-12" below the floor, "" for NaN.
+std::string p_csv(double p);
 std::string csv_quote(const std::string& s);                                 // RFC 4180 quoting where needed
 std::string csv_line(const std::vector<std::string>& fields);                // quoted fields, commas, '\n'
 std::string cells_csv(const std::vector<CellResult>& cells);                // every scalar of every cell

@@ -95,8 +95,8 @@ std::string pass_table_csv(const Analysis& a) {
     for (const auto& p : v.passes)
       o << v.key.generator << ',' << v.key.rounds << ',' << v.key.noise() << ',' << v.key.seeding_name() << ','
         << num(v.key.dt) << ',' << p.stream << ',' << p.test << ',' << p.trials << ',' << p.passed << ','
-        << num(p.fraction) << ',' << num(p.ci_low) << ',' << num(p.ci_high) << ',' << num(p.decision.p) << ','
-        << num(p.decision.p_adjusted) << ',' << int(p.decision.differs) << '\n';
+        << num(p.fraction) << ',' << num(p.ci_low) << ',' << num(p.ci_high) << ',' << detail::p_csv(p.decision.p) << ','
+        << detail::p_csv(p.decision.p_adjusted) << ',' << int(p.decision.differs) << '\n';
   return o.str();
 }
 
@@ -113,8 +113,8 @@ std::string observables_csv(const Analysis& a) {
         << c.n << ',' << num(c.value) << ',' << num(c.value_sd) << ','
         << c.n_ref << ',' << num(c.ref) << ',' << num(c.ref_sd) << ',' << num(c.error_rate) << ',' << num(c.sigma)
         << ',' << c.test << ',' << num(c.statistic) << ',' << num(c.dof) << ',' << num(c.dof2) << ','
-        << num(c.decision.p) << ',' << num(c.decision.p_adjusted) << ',' << int(c.decision.differs) << ','
-        << num(c.equivalence.p) << ',' << num(c.equivalence.p_adjusted) << ',' << int(c.equivalence.equivalent)
+        << detail::p_csv(c.decision.p) << ',' << detail::p_csv(c.decision.p_adjusted) << ',' << int(c.decision.differs) << ','
+        << detail::p_csv(c.equivalence.p) << ',' << detail::p_csv(c.equivalence.p_adjusted) << ',' << int(c.equivalence.equivalent)
         << ',' << num(c.score) << ',' << num(c.score_runs) << ',' << csv_quote(c.note) << '\n';
   return o.str();
 }
@@ -172,7 +172,7 @@ std::string summary_csv(const Analysis& a) {
   for (const auto& v : a.variants)
     o << v.key.generator << ',' << v.key.rounds << ',' << v.key.noise() << ','
       << v.key.seeding_name() << ',' << num(v.key.dt) << ',' << v.cells.size() << ','
-      << v.broken.size() << ',' << csv_quote(v.verdict) << ',' << num(v.min_p) << ',' << csv_quote(v.min_p_what)
+      << v.broken.size() << ',' << csv_quote(v.verdict) << ',' << detail::p_csv(v.min_p) << ',' << csv_quote(v.min_p_what)
       << ',' << num(v.nist_failed) << ',' << num(v.nist_columns) << ','
       << num(v.ns_per_number) << ',' << num(v.step_ms) << ','
       << num(v.rng_share) << '\n';
@@ -350,7 +350,7 @@ std::string zeta_csv(const Analysis& a) {
       << v.zeta.n << ',' << num(v.zeta.mean) << ',' << num(v.zeta.variance) << ',' << num(v.zeta.variance_ci.low)
       << ',' << num(v.zeta.variance_ci.high) << ',' << num(v.zeta.second_moment) << ','
       << num(v.zeta.second_moment_ci.low) << ',' << num(v.zeta.second_moment_ci.high) << ',' << num(v.zeta.skewness)
-      << ',' << num(v.zeta.kurtosis) << ',' << num(v.zeta_decision.p) << ',' << num(v.zeta_decision.p_adjusted)
+      << ',' << num(v.zeta.kurtosis) << ',' << detail::p_csv(v.zeta_decision.p) << ',' << detail::p_csv(v.zeta_decision.p_adjusted)
       << ',' << num(v.zeta_predicted_shift) << ',' << num(v.power_predicted_shift.value) << ','
       << num(v.power_predicted_shift.se) << ',' << v.power_lags << ',' << num(m.shift) << ',' << num(m.sigma) << ','
       << num(m.ci_low) << ',' << num(m.ci_high) << ',' << detail::csv_quote(v.key.integrator) << '\n';

@@ -101,7 +101,7 @@ std::string verdicts_csv(const Analysis& a) {
     o << detail::csv_line({k.label(), k.seeding_name(), std::string(rng::to_string(k.distribution)),
                            uniform ? std::string() : std::string(rng::to_string(k.feed)), k.integrator, num(k.dt),
                            std::to_string(r.v->cells.size()), r.observable, num(r.shift), num(r.ci_low),
-                           num(r.ci_high), num(r.margin), num(r.p_adjusted), num(r.p_equivalence),
+                           num(r.ci_high), num(r.margin), detail::p_csv(r.p_adjusted), detail::p_csv(r.p_equivalence),
                            to_string(r.outcome)});
   }
   return o.str();

@@ -6,13 +6,15 @@
 #include <cmath>
 #include <map>
 
+#include "dpdrng/common/numbers.hpp"
 #include "report_chart.hpp"
 
 namespace dpdrng::study {
 namespace {
 
 bool is_reference_rdf_cell(const CellResult& c, double dt) {
-  return c.cell.reference && c.cell.feed == rng::Feed::halves && c.cell.dt == dt && c.status == CellStatus::ok;
+  return c.cell.reference && c.cell.gamma == 0 && c.cell.feed == rng::Feed::halves && c.cell.dt == dt &&
+         c.status == CellStatus::ok;
 }
 
 double median(std::vector<double> v) {
@@ -30,11 +32,13 @@ std::string bare_reason(const std::string& reason) {
 
 void reference_of(const std::vector<CellResult>& cells, StabilityAnalysis& a) {
   for (const auto& c : cells)
-    if (c.cell.reference && (!std::isfinite(a.reference_dt) || c.cell.dt < a.reference_dt)) a.reference_dt = c.cell.dt;
+    if (c.cell.reference && c.cell.gamma == 0 && (!std::isfinite(a.reference_dt) || c.cell.dt < a.reference_dt))
+      a.reference_dt = c.cell.dt;
   std::vector<const CellResult*> ref;
   for (const auto& c : cells)
     if (is_reference_rdf_cell(c, a.reference_dt)) ref.push_back(&c);
   a.reference_cells = ref.size();
+  a.reference_pressure = replica_mean(ref, "pressure_conservative_mean", "pressure_sem").mean;
   a.reference_diffusion = replica_mean(ref, "diffusion_coefficient", "diffusion_sem").mean;
   a.reference_rdf = detail::mean_series(ref, "rdf/g");
 }
@@ -43,21 +47,33 @@ void accuracy_of(const std::vector<const CellResult*>& ok, const StabilityAnalys
   const ReplicaMean t = replica_mean(ok, "temperature_mean", "temperature_sem");
   p.temperature = t.mean, p.temperature_ci = t.ci95;
   p.temperature_error = std::abs(t.mean - 1.0);
+  const ReplicaMean tc = replica_mean(ok, "temperature_conf_mean", "temperature_conf_sem");
+  p.temperature_conf = tc.mean, p.temperature_conf_ci = tc.ci95;
   p.pressure_conservative = replica_mean(ok, "pressure_conservative_mean", "pressure_sem").mean;
   p.pressure_error = std::abs(p.pressure_conservative - kWaterPressureConservative) / kWaterPressureConservative;
+  p.pressure_ref_error = std::abs(p.pressure_conservative - a.reference_pressure) / a.reference_pressure;
   p.diffusion = replica_mean(ok, "diffusion_coefficient", "diffusion_sem").mean;
   p.diffusion_error = std::abs(p.diffusion - a.reference_diffusion) / a.reference_diffusion;
   if (!a.reference_rdf.empty()) p.rdf_error = curve_error(detail::mean_series(ok, "rdf/g"), a.reference_rdf, 0.1);
   std::vector<double> cost;
   for (const auto* c : ok)
-    if (c->has("cost.step_seconds")) cost.push_back(c->scalar("cost.step_seconds", NAN) / c->cell.dt);
-  p.seconds_per_time = median(cost);
+    if (c->has("cost.step_seconds")) cost.push_back(c->scalar("cost.step_seconds", NAN));
+  p.step_seconds = median(cost);
+  p.seconds_per_time = p.step_seconds / p.dt;
 }
 
 }  // namespace
 
 std::string StabilityPoint::method() const {
-  return (integrator.empty() ? std::string("mvv") : integrator) + " " + generator + " " + noise;
+  const std::string m = (integrator.empty() ? std::string("mvv") : integrator) + " " + generator + " " + noise;
+  return gamma > 0 ? m + " γ" + exact_decimal(gamma) : m;
+}
+
+std::vector<std::string> stability_methods(const StabilityAnalysis& a) {
+  std::vector<std::string> out;
+  for (const auto& p : a.points)
+    if (std::find(out.begin(), out.end(), p.method()) == out.end()) out.push_back(p.method());
+  return out;
 }
 
 StabilityAnalysis analyse_stability(const StudyConfig& config, const std::vector<CellResult>& cells) {
@@ -77,8 +93,12 @@ StabilityAnalysis analyse_stability(const StudyConfig& config, const std::vector
   std::stable_sort(sorted.begin(), sorted.end(),
                    [&](const CellResult* x, const CellResult* y) { return rank(x) < rank(y); });
   for (const auto* c : sorted) {
+    if (const auto it = c->notes.find("cost.cpu");
+        it != c->notes.end() && std::find(a.cpus.begin(), a.cpus.end(), it->second) == a.cpus.end())
+      a.cpus.push_back(it->second);
     StabilityPoint key;
     key.integrator = c->cell.integrator, key.generator = c->cell.label(), key.noise = c->cell.noise();
+    key.gamma = c->cell.gamma;
     const std::string m = key.method();
     if (!groups.count(m)) order.push_back(m);
     groups[m][c->cell.dt].push_back(c);
@@ -88,6 +108,7 @@ StabilityAnalysis analyse_stability(const StudyConfig& config, const std::vector
       StabilityPoint p;
       const Cell& first = group.front()->cell;
       p.integrator = first.integrator, p.generator = first.label(), p.noise = first.noise(), p.dt = dt;
+      p.gamma = first.gamma, p.reference = first.reference;
       p.replicas = group.size();
       std::vector<const CellResult*> ok;
       for (const auto* c : group) {
@@ -107,16 +128,6 @@ StabilityAnalysis analyse_stability(const StudyConfig& config, const std::vector
       a.points.push_back(std::move(p));
     }
   return a;
-}
-
-double largest_accurate_dt(const StabilityAnalysis& a, const std::string& method, double tolerance) {
-  double best = NAN;
-  for (const auto& p : a.points) {
-    if (p.method() != method) continue;
-    if (p.stable < p.replicas || !(p.temperature_error < tolerance)) break;
-    best = p.dt;
-  }
-  return best;
 }
 
 double first_unstable_dt(const StabilityAnalysis& a, const std::string& method) {

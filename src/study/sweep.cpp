@@ -61,6 +61,7 @@ std::string Cell::id() const {
     tag.erase(std::remove(tag.begin(), tag.end(), ':'), tag.end());
     dt_part += "-" + tag;
   }
+  if (gamma > 0) dt_part += "-gamma" + exact_decimal(gamma);
   if (reference)
     std::snprintf(buf, sizeof buf, "%s-%s-%s-rep%02d", generator.c_str(), n.c_str(), dt_part.c_str(), replica);
   else
@@ -94,8 +95,8 @@ std::vector<Cell> enumerate_cells(const StudyConfig& config) {
   const std::vector<std::string> scene_integrator{""};
   for (double dt : config.scene.dt)
     for (const auto& integ : config.integrators.empty() ? scene_integrator : config.integrators) {
-      for (int rep = 0; rep < config.reference_replica_count(); ++rep) {
-        const bool reference_alone = rep >= config.replicas;  // the reference's extra replicas
+      for (int rep = 0; rep < config.reference_replicas_at(dt); ++rep) {
+        const bool reference_alone = rep >= config.replicas_at(dt);  // the reference's extra replicas
         // A replica's seed sets the initial state (and the reference's stream); distinct per replica, shared
         // across generators.
         const std::uint64_t seed = rng::splitmix64_mix(config.seed * 0x9e3779b97f4a7c15ull + std::uint64_t(rep));
@@ -130,6 +131,20 @@ std::vector<Cell> enumerate_cells(const StudyConfig& config) {
                   cells.push_back(c);
                 }
           }
+        // The friction series: the reference under the first noise, as pnhln runs.
+        for (const double gamma : config.reference_gammas) {
+          Cell ref;
+          ref.generator = config.reference;
+          ref.distribution = config.distributions.front();
+          ref.feed = ref.distribution == rng::Distribution::gauss ? config.feeds.front() : rng::Feed::halves;
+          ref.dt = dt;
+          ref.integrator = integ;
+          ref.gamma = gamma;
+          ref.replica = rep;
+          ref.reference = true;
+          ref.seed = seed;
+          cells.push_back(ref);
+        }
       }
     }
   return cells;

@@ -30,9 +30,11 @@ namespace {
 
 std::string source(const std::string& file) { return std::string(DPDRNG_SOURCE_DIR) + "/tests/golden/" + file; }
 
-// Wall-clock figures: cell seconds and the cost.* timings (the pair count per step is a result, kept).
+// Wall-clock figures and the CPU that made them: cell seconds, the cost.* timings (the pair count per step is a
+// result, kept) and the cost.cpu note.
 bool timing_attribute(const std::string& name) {
-  return name == "seconds" || (name.rfind("cost.", 0) == 0 && name != "cost.numbers_per_step");
+  return name == "seconds" || name == "note.cost.cpu" ||
+         (name.rfind("cost.", 0) == 0 && name != "cost.numbers_per_step");
 }
 
 // Every attribute and dataset of one stored cell group, read from the file as h5py would.

@@ -3,6 +3,7 @@
 // estimate (derived at the test), so a correct implementation sits far inside it.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -65,12 +66,16 @@ TEST(Defect, RefusesMalformedNames) {
   for (const char* bad : {"defect:", "defect:variance", "defect:variance=", "defect:variance=-1",
                           "defect:variance=nan", "defect:lag1=0.51", "defect:lag1=-1.5", "defect:mean=inf",
                           "defect:base=tea32", "defect:colour=red", "defect:variance=0.1,variance=0.2",
-                          "defect:variance=0.1,", "defect:variance=0x10"})
+                          "defect:variance=0.1,", "defect:variance=0x10", "defect:aniso=1", "defect:aniso=-0.5",
+                          "defect:aniso=0.1,aniso=0.2"})
     EXPECT_THROW(validated({bad, 0}), InputError) << bad;
   // A lag-1 defect needs the step in the hash input.
   EXPECT_THROW(check_defect_seeding(validated({"defect:lag1=0.1", 0}), Seeding::distance), InputError);
   EXPECT_NO_THROW(check_defect_seeding(validated({"defect:lag1=0.1", 0}), Seeding::pair_step));
   EXPECT_NO_THROW(check_defect_seeding(validated({"defect:variance=0.1", 0}), Seeding::distance));
+  // An anisotropic defect needs the separation in the hash input.
+  EXPECT_THROW(check_defect_seeding(validated({"defect:aniso=0.1", 0}), Seeding::pair_step), InputError);
+  EXPECT_NO_THROW(check_defect_seeding(validated({"defect:aniso=0.1", 0}), Seeding::distance));
 }
 
 // No defect: the base's numbers, bit for bit, in every seeding and in counter streams; with a defect the words
@@ -146,6 +151,41 @@ TEST(Defect, Lag1AlongAPairsSteps) {
   const double se = std::sqrt((1 + 2 * 0.09) / double(kN));
   EXPECT_NEAR(lag_corr(z, 1), 0.3, 6 * se);
   EXPECT_NEAR(variance(z), 1.1, 6 * 1.1 * std::sqrt(2.0 / double(kN)));
+}
+
+// The anisotropic defect: pairs along z have ζ variance 1 + 2κ, pairs in the x-y plane 1 − κ, and pairs whose
+// directions are uniform on the sphere 1 (the mean of 3cos²θ − 1 over the sphere is 0: the second Legendre
+// polynomial averages to zero), so the fluid as a whole is neither heated nor cooled.
+TEST(Defect, AnisotropyFollowsThePairsDirection) {
+  const double kappa = 0.3;
+  const GeneratorSpec spec = validated({"defect:aniso=0.3", 0});
+  constexpr std::size_t n = std::size_t{1} << 18;
+  const auto sample = [&](auto direction) {
+    std::vector<double> z;
+    z.reserve(n);
+    with_pair_noise(spec, Seeding::distance, Distribution::gauss, 9, [&](const auto& pn) {
+      for (std::size_t k = 0; k < n; ++k) {
+        const auto [dx, dy, dz] = direction(k);
+        z.push_back(pn(PairInput{1, 2, dx, dy, dz, 0}));
+      }
+      return 0;
+    });
+    return z;
+  };
+  const auto tol = [](double v) { return 6 * v * std::sqrt(2.0 / double(n)); };
+  // Distinct separations (the distance seeding hashes dx and dy) along z to within 1e-8 rad, along x, and on a
+  // golden-spiral cover of the sphere.
+  const auto along_z = sample([](std::size_t k) { return std::array{1e-9 * double(k + 1), 1e-9, 0.5}; });
+  const auto along_x = sample([](std::size_t k) { return std::array{0.2 + 1e-6 * double(k), 0.0, 0.0}; });
+  const auto sphere = sample([](std::size_t k) {
+    const double c = 1 - 2 * (double(k) + 0.5) / double(n), s = std::sqrt(1 - c * c), phi = 2.399963229728653 * double(k);
+    const double r = 0.8;
+    return std::array{r * s * std::cos(phi), r * s * std::sin(phi), r * c};
+  });
+  EXPECT_NEAR(variance(along_z), 1 + 2 * kappa, tol(1 + 2 * kappa));
+  EXPECT_NEAR(variance(along_x), 1 - kappa, tol(1 - kappa));
+  EXPECT_NEAR(variance(sphere), 1.0, tol(1.0 + kappa));
+  EXPECT_NEAR(mean(along_z), 0.0, 6 * std::sqrt((1 + 2 * kappa) / double(n)));
 }
 
 }  // namespace dpdrng_test::rng_test_defect

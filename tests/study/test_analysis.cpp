@@ -408,6 +408,10 @@ TEST(StudyReport, PValuesArePrintedNoSmallerThanTheFloor) {
   }
   EXPECT_NE(observables_markdown(a, "gauss").find("(p < 1e-12)"), std::string::npos);
   EXPECT_NE(summary_markdown(a).find("| < 1e-12 |"), std::string::npos);
+  // The CSV tables the charts and the README read floor them too.
+  for (const std::string& csv : {verdicts_csv(a), observables_csv(a), summary_csv(a), zeta_csv(a), pass_table_csv(a)})
+    EXPECT_FALSE(std::regex_search(csv, std::regex("e-(1[3-9]|[2-9][0-9]|[1-9][0-9][0-9])"))) << csv;
+  EXPECT_NE(verdicts_csv(a).find(",<1e-12,"), std::string::npos);
 }
 
 TEST(StudyReport, NistLayoutFollowsTheReference) {

@@ -86,18 +86,22 @@ TEST(Stability, PointsCountBlowUpsAndMeasureOnlyStableReplicas) {
   EXPECT_NEAR(first.seconds_per_time, 1e-3 / 0.02, 1e-12);
 }
 
-TEST(Stability, LargestAccurateDtAndFirstBlowUp) {
+TEST(Stability, FrontierBracketAndFirstBlowUp) {
   const StudyConfig c = parse_config(kConfig, "cfg.toml");
   const StabilityAnalysis a = analyse_stability(c, made_up_cells(c));
-  // MVV: |T − 1| = 2 % at 0.02, 5 % at 0.05, blown up at 0.1.
-  EXPECT_TRUE(std::isnan(largest_accurate_dt(a, "mvv:0.5 tea32(1) gauss", 0.01)));
-  EXPECT_EQ(largest_accurate_dt(a, "mvv:0.5 tea32(1) gauss", 0.03), 0.02);
+  // MVV: k_BT 1.02 at 0.02 and 1.05 at 0.05 (CIs ±0.0013), blown up at 0.1: outside from the smallest Δt.
+  const Frontier mvv = accuracy_frontier(a, "mvv:0.5 tea32(1) gauss", Thermometer::kinetic, 0.01);
+  EXPECT_TRUE(std::isnan(mvv.inside));
+  EXPECT_EQ(mvv.outside, 0.02);
   EXPECT_EQ(first_unstable_dt(a, "mvv:0.5 tea32(1) gauss"), 0.1);
-  EXPECT_EQ(largest_accurate_dt(a, "shardlow tea32(1) gauss", 0.01), 0.1);
+  const Frontier sh = accuracy_frontier(a, "shardlow tea32(1) gauss", Thermometer::kinetic, 0.01);
+  EXPECT_EQ(sh.inside, 0.1);
+  EXPECT_TRUE(std::isnan(sh.outside));
   EXPECT_TRUE(std::isnan(first_unstable_dt(a, "shardlow tea32(1) gauss")));
-  const std::string frontier = frontier_markdown(a);
-  EXPECT_NE(frontier.find("| mvv:0.5 tea32(1) gauss | none | 0.02 | 0.1 |"), std::string::npos) << frontier;
-  EXPECT_NE(frontier.find("| shardlow tea32(1) gauss | 0.1 | 0.1 | none in the sweep |"), std::string::npos) << frontier;
+  const std::string frontier = frontier_markdown(a, 0.01);
+  EXPECT_NE(frontier.find("| mvv:0.5 tea32(1) gauss | none – 0.02 | – |"), std::string::npos) << frontier;
+  EXPECT_NE(frontier.find("| shardlow tea32(1) gauss | 0.1 – none in the sweep | – |"), std::string::npos)
+      << frontier;
 }
 
 // A blown-up point is in the map, the accuracy table and the CSV: never dropped.
@@ -139,7 +143,9 @@ std::string read(const fs::path& p) {
 }
 
 // study/stability-ci.toml end to end: every cell stored, MVV blown up at Δt 0.5 (the run's own guard, not a
-// made-up cell), its cells null (no observable stored) and named in every table of the report.
+// made-up cell), its cells null (no observable stored) and named in every table of the report; the γ = 4.5 series
+// read back from the store with its γ; the frontier, ranking and crossing tables and their CSVs written, every
+// frontier of the report equal to accuracy_frontier on the stored cells.
 TEST(StabilityCli, CiStudyReportsEveryCell) {
   TempDir tmp;
   const std::string cfg = std::string(DPDRNG_SOURCE_DIR) + "/study/stability-ci.toml";
@@ -160,22 +166,55 @@ TEST(StabilityCli, CiStudyReportsEveryCell) {
   ASSERT_GT(unstable, 0u) << "MVV at Δt 0.5 should blow up";
   ASSERT_EQ(run_cli("study report '" + out.string() + "'", &err), 0) << err;
   const std::string md = read(out / "report" / "report.md");
-  for (const char* section : {"## Stability map", "## How large a Δt each method allows",
+  for (const char* section : {"## Stability map", "## Accuracy frontiers", "## The integrators ranked", "## The friction series",
+                              "## The crossing: noise error against integrator error",
                               "## Accuracy against cost per unit of simulated time", "## Unstable and failed cells"})
     EXPECT_NE(md.find(section), std::string::npos) << section;
   EXPECT_NE(md.find("| mvv:0.5 tea32(1) gauss | 0.5 | 0/2 | blown up: step "), std::string::npos) << md;
   // The swept integrators, not the scene's unused λ, and no claim of error control over zero tests.
-  EXPECT_NE(md.find("integrators swept: mvv:0.5, shardlow, scmvv:5, pnhln:10"), std::string::npos)
+  EXPECT_NE(md.find("integrators swept: mvv:0.5, mvv:0.65, shardlow, scmvv:5, pnhln:10"), std::string::npos)
       << md.substr(0, 1200);
   EXPECT_EQ(md.find("λ = 0.5,"), std::string::npos) << md.substr(0, 1200);
   EXPECT_NE(md.find("Error control: none needed (no tests, no verdicts)"), std::string::npos);
   const StabilityAnalysis a = analyse_stability(c, cells);
-  // mvv, shardlow and scmvv with MT19937 and 32TEA(1), pnhln with MT19937 only, each at 4 Δt.
-  EXPECT_EQ(a.points.size(), (3u * 2u + 1u) * 4u);
-  for (const auto& p : a.points)
+  // Four integrators with MT19937 and 32TEA(1) under two feeds, pnhln with MT19937 only, and the γ = 4.5 series of
+  // all five with MT19937, each at 4 Δt.
+  EXPECT_EQ(a.points.size(), (4u * 2u * 2u + 1u + 5u) * 4u);
+  std::size_t gamma_points = 0;
+  for (const auto& p : a.points) {
     if (p.integrator == "pnhln:10") {
       EXPECT_EQ(p.generator, "mt19937") << p.method();
     }
+    if (p.gamma > 0) {
+      ++gamma_points;
+      EXPECT_EQ(p.gamma, 4.5);
+      EXPECT_TRUE(p.reference) << p.method();
+      EXPECT_NE(p.method().find(" γ4.5"), std::string::npos) << p.method();
+    }
+  }
+  EXPECT_EQ(gamma_points, 5u * 4u);
+  for (const auto& p : a.points) EXPECT_EQ(p.replicas, p.dt == 0.05 ? 3u : 2u) << p.method() << " at " << p.dt;
+  const std::string frontier_csv_text = read(out / "report" / "frontier.csv");
+  for (const auto& m : stability_methods(a)) {
+    const Frontier f = accuracy_frontier(a, m, Thermometer::kinetic, 0.01);
+    EXPECT_NE(md.find("| " + m + " | " + bracket_text(f) + " |"), std::string::npos) << m;
+    EXPECT_NE(frontier_csv_text.find(m + ",kinetic,"), std::string::npos) << m;
+  }
+  // The friction series row of λ = 0.65: its brackets beside the scene's γ ones, from the same frontiers.
+  const std::string g45 = "| mvv:0.65 | 4.5 | " +
+                          bracket_text(accuracy_frontier(a, "mvv:0.65 mt19937 gauss γ4.5", Thermometer::kinetic, 0.01)) +
+                          " | ";
+  EXPECT_NE(md.find(g45), std::string::npos) << g45;
+  const auto ranks = rank_integrators(a, 0.01);
+  ASSERT_EQ(ranks.size(), 5u);
+  for (const auto& r : ranks) {
+    EXPECT_EQ(r.ranked_by, r.integrator == "pnhln:10" ? Thermometer::configurational : Thermometer::kinetic);
+    EXPECT_GT(r.step_seconds, 0) << r.integrator;  // every cell records its step seconds
+  }
+  EXPECT_EQ(read(out / "report" / "ranking.csv"), ranking_csv(ranks));
+  EXPECT_EQ(read(out / "report" / "crossing.csv"), crossing_csv(crossing_rows(a)));
+  // The cells name the CPU their costs were measured on, and the ranking says it.
+  EXPECT_NE(md.find("measured on " + a.cpus.front()), std::string::npos);
   const std::string csv = read(out / "report" / "stability.csv");
   for (const auto& p : a.points) {
     EXPECT_NE(csv.find(p.method() + "," + p.integrator), std::string::npos) << p.method();

@@ -31,6 +31,7 @@ struct CalibrationPlan {
   std::vector<int> replicas;  // replica counts to calibrate; empty = the config's
   std::vector<double> variance{0.0025, 0.005, 0.01, 0.02};  // ε of defect:variance=ε
   std::vector<double> lag1, mean;                            // ρ and μ (lag-1 runs in pair-step seeding)
+  std::vector<double> aniso;  // κ of defect:aniso=κ (runs in distance seeding: it reads the separation)
   // Cells this process computes (round-robin over the pool's cells, as `study run --shard`): shards share the
   // pool directory, and the run that finds every cell stored analyses.
   Shard shard{};

@@ -89,6 +89,14 @@ struct StudyConfig {
   std::vector<rng::Seeding> seedings{rng::Seeding::distance};
   // [sweep] integrators ("mvv:<λ>", "shardlow"; sweep.hpp); empty: MVV at the scene's λ, not a factor.
   std::vector<std::string> integrators;
+  // [sweep] reference_gammas: friction coefficients beside the scene's γ at which the reference alone runs (its
+  // first noise, every integrator, Δt and replica): a friction series that needs no generator, e.g. γ = 4.5
+  // against Groot & Warren's (1997) runs. Empty: none. Water scene only.
+  std::vector<double> reference_gammas;
+  // [sweep] extra_replicas = { "0.03" = 8 }: more replicas at chosen Δt of [scene] dt (near the accuracy
+  // frontiers, where a CI decides the bracket), every variant and the reference alike; the other Δt keep
+  // `replicas`. Empty: none.
+  std::map<double, int> extra_replicas;
   SceneParams scene;
   TestParams tests;
   CostParams cost;
@@ -98,6 +106,12 @@ struct StudyConfig {
 
   nlohmann::json canonical() const;
   int reference_replica_count() const { return std::max(reference_replicas, replicas); }
+  // Replicas of every variant at Δt (extra_replicas or `replicas`), and of the reference (at least as many).
+  int replicas_at(double dt) const {
+    const auto it = extra_replicas.find(dt);
+    return it == extra_replicas.end() ? replicas : std::max(replicas, it->second);
+  }
+  int reference_replicas_at(double dt) const { return std::max(reference_replica_count(), replicas_at(dt)); }
 };
 
 // `origin` names the source in messages (a path, or "<string>").

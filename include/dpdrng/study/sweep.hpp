@@ -45,6 +45,7 @@ struct Cell {
   rng::Seeding seeding = rng::Seeding::distance;  // unused by the reference, which draws from its stream
   double dt = 0.04;
   std::string integrator;  // [sweep] integrators entry; empty: MVV at the scene's λ (stores without the field)
+  double gamma = 0;  // a [sweep] reference_gammas value; 0: the scene's γ (stores without the field)
   int replica = 0;
   bool reference = false;
   bool nist = false;  // this cell also feeds its outputs to the NIST battery
@@ -53,7 +54,7 @@ struct Cell {
   std::string noise() const;         // noise_name(distribution, feed)
   std::string seeding_name() const;  // "stream" for the reference
   // e.g. "tea32-r01-gauss-distance-dt0.04-rep00", a valid file and group name; an integrator named by the sweep
-  // follows the Δt ("…-dt0.04-mvv0.65-rep00").
+  // follows the Δt ("…-dt0.04-mvv0.65-rep00"), a reference_gammas value after it ("…-mvv0.65-gamma4.5-rep00").
   std::string id() const;
   std::string label() const;  // e.g. "tea32(1)"
 };

@@ -9,7 +9,7 @@ set datafile missing "nan"
 set logscale x 2
 set logscale y
 set xrange [0.8:*]
-set arrow from graph 0, first 6.7937 to graph 1, first 6.7937 nohead dt 2 lw 2 lc rgb 'black'
-set label "mt19937" at graph 0.01, first 6.7937 offset 0,0.6 tc rgb 'black'
+set arrow from graph 0, first 4.97784 to graph 1, first 4.97784 nohead dt 2 lw 2 lc rgb 'black'
+set label "mt19937" at graph 0.01, first 4.97784 offset 0,0.6 tc rgb 'black'
 plot "data/cost_vs_rounds_gauss_0.dat" using 1:2 with linespoints lw 2 pt 7 title "tea32 distance", \
      "data/cost_vs_rounds_gauss_1.dat" using 1:2 with linespoints lw 2 pt 7 title "tea64 distance"

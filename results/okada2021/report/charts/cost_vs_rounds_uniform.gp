@@ -9,7 +9,7 @@ set datafile missing "nan"
 set logscale x 2
 set logscale y
 set xrange [0.8:*]
-set arrow from graph 0, first 7.45817 to graph 1, first 7.45817 nohead dt 2 lw 2 lc rgb 'black'
-set label "mt19937" at graph 0.01, first 7.45817 offset 0,0.6 tc rgb 'black'
+set arrow from graph 0, first 4.47134 to graph 1, first 4.47134 nohead dt 2 lw 2 lc rgb 'black'
+set label "mt19937" at graph 0.01, first 4.47134 offset 0,0.6 tc rgb 'black'
 plot "data/cost_vs_rounds_uniform_0.dat" using 1:2 with linespoints lw 2 pt 7 title "tea32 distance", \
      "data/cost_vs_rounds_uniform_1.dat" using 1:2 with linespoints lw 2 pt 7 title "tea64 distance"

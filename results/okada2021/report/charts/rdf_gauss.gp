@@ -6,7 +6,7 @@ set ylabel "g(r)"
 set grid
 set key outside right top noenhanced
 set datafile missing "nan"
-plot "data/rdf_gauss_0.dat" using 1:2 with lines lw 4 lc rgb 'black' title "mt19937 (reference, 3 replicas)", \
+plot "data/rdf_gauss_0.dat" using 1:2 with lines lw 4 lc rgb 'black' title "mt19937 (reference, 16 replicas)", \
      "data/rdf_gauss_1.dat" using 1:2 with lines lw 2 title "tea32(1) distance", \
      "data/rdf_gauss_2.dat" using 1:2 with lines lw 2 dt 3 title "tea32(32) distance", \
      "data/rdf_gauss_3.dat" using 1:2 with lines lw 2 title "tea64(1) distance", \

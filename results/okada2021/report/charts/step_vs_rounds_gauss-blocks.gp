@@ -8,7 +8,7 @@ set key outside right top noenhanced
 set datafile missing "nan"
 set logscale x 2
 set xrange [0.8:*]
-set arrow from graph 0, first 2.4124 to graph 1, first 2.4124 nohead dt 2 lw 2 lc rgb 'black'
-set label "mt19937" at graph 0.01, first 2.4124 offset 0,0.6 tc rgb 'black'
+set arrow from graph 0, first 1.93453 to graph 1, first 1.93453 nohead dt 2 lw 2 lc rgb 'black'
+set label "mt19937" at graph 0.01, first 1.93453 offset 0,0.6 tc rgb 'black'
 plot "data/step_vs_rounds_gauss-blocks_0.dat" using 1:2 with linespoints lw 2 pt 7 title "tea32 distance", \
      "data/step_vs_rounds_gauss-blocks_1.dat" using 1:2 with linespoints lw 2 pt 7 title "tea64 distance"

@@ -8,7 +8,7 @@ set key outside right top noenhanced
 set datafile missing "nan"
 set logscale x 2
 set xrange [0.8:*]
-set arrow from graph 0, first 1.32447 to graph 1, first 1.32447 nohead dt 2 lw 2 lc rgb 'black'
-set label "mt19937" at graph 0.01, first 1.32447 offset 0,0.6 tc rgb 'black'
+set arrow from graph 0, first 1.31468 to graph 1, first 1.31468 nohead dt 2 lw 2 lc rgb 'black'
+set label "mt19937" at graph 0.01, first 1.31468 offset 0,0.6 tc rgb 'black'
 plot "data/step_vs_rounds_gauss_0.dat" using 1:2 with linespoints lw 2 pt 7 title "tea32 distance", \
      "data/step_vs_rounds_gauss_1.dat" using 1:2 with linespoints lw 2 pt 7 title "tea64 distance"

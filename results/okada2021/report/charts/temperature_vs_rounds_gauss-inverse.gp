@@ -8,11 +8,11 @@ set key outside right top noenhanced
 set datafile missing "nan"
 set logscale x 2
 set xrange [0.8:*]
-set arrow from graph 0, first 1.03611 to graph 1, first 1.03611 nohead dt 2 lw 2 lc rgb 'black'
-set label "mt19937 mean" at graph 0.01, first 1.03611 offset 0,0.6 tc rgb 'black'
-set arrow from graph 0, first 1.03784 to graph 1, first 1.03784 nohead dt 2 lw 2 lc rgb 'gray50'
-set label "" at graph 0.01, first 1.03784 offset 0,0.6 tc rgb 'gray50'
-set arrow from graph 0, first 1.03438 to graph 1, first 1.03438 nohead dt 2 lw 2 lc rgb 'gray50'
-set label "" at graph 0.01, first 1.03438 offset 0,0.6 tc rgb 'gray50'
+set arrow from graph 0, first 1.03478 to graph 1, first 1.03478 nohead dt 2 lw 2 lc rgb 'black'
+set label "mt19937 mean" at graph 0.01, first 1.03478 offset 0,0.6 tc rgb 'black'
+set arrow from graph 0, first 1.03719 to graph 1, first 1.03719 nohead dt 2 lw 2 lc rgb 'gray50'
+set label "" at graph 0.01, first 1.03719 offset 0,0.6 tc rgb 'gray50'
+set arrow from graph 0, first 1.03236 to graph 1, first 1.03236 nohead dt 2 lw 2 lc rgb 'gray50'
+set label "" at graph 0.01, first 1.03236 offset 0,0.6 tc rgb 'gray50'
 plot "data/temperature_vs_rounds_gauss-inverse_0.dat" using 1:2:3 with yerrorlines lw 2 pt 7 title "tea32 distance", \
      "data/temperature_vs_rounds_gauss-inverse_1.dat" using 1:2:3 with yerrorlines lw 2 pt 7 title "tea64 distance"

@@ -9,11 +9,11 @@ set datafile missing "nan"
 set logscale x 2
 set logscale y
 set xrange [0.8:*]
-set arrow from graph 0, first 1.03547 to graph 1, first 1.03547 nohead dt 2 lw 2 lc rgb 'black'
-set label "mt19937 mean" at graph 0.01, first 1.03547 offset 0,0.6 tc rgb 'black'
-set arrow from graph 0, first 1.03785 to graph 1, first 1.03785 nohead dt 2 lw 2 lc rgb 'gray50'
-set label "" at graph 0.01, first 1.03785 offset 0,0.6 tc rgb 'gray50'
-set arrow from graph 0, first 1.0331 to graph 1, first 1.0331 nohead dt 2 lw 2 lc rgb 'gray50'
-set label "" at graph 0.01, first 1.0331 offset 0,0.6 tc rgb 'gray50'
+set arrow from graph 0, first 1.03535 to graph 1, first 1.03535 nohead dt 2 lw 2 lc rgb 'black'
+set label "mt19937 mean" at graph 0.01, first 1.03535 offset 0,0.6 tc rgb 'black'
+set arrow from graph 0, first 1.03844 to graph 1, first 1.03844 nohead dt 2 lw 2 lc rgb 'gray50'
+set label "" at graph 0.01, first 1.03844 offset 0,0.6 tc rgb 'gray50'
+set arrow from graph 0, first 1.03225 to graph 1, first 1.03225 nohead dt 2 lw 2 lc rgb 'gray50'
+set label "" at graph 0.01, first 1.03225 offset 0,0.6 tc rgb 'gray50'
 plot "data/temperature_vs_rounds_gauss_0.dat" using 1:2:3 with yerrorlines lw 2 pt 7 title "tea32 distance", \
      "data/temperature_vs_rounds_gauss_1.dat" using 1:2:3 with yerrorlines lw 2 pt 7 title "tea64 distance"

@@ -8,11 +8,11 @@ set key outside right top noenhanced
 set datafile missing "nan"
 set logscale x 2
 set xrange [0.8:*]
-set arrow from graph 0, first 1.03598 to graph 1, first 1.03598 nohead dt 2 lw 2 lc rgb 'black'
-set label "mt19937 mean" at graph 0.01, first 1.03598 offset 0,0.6 tc rgb 'black'
-set arrow from graph 0, first 1.03831 to graph 1, first 1.03831 nohead dt 2 lw 2 lc rgb 'gray50'
-set label "" at graph 0.01, first 1.03831 offset 0,0.6 tc rgb 'gray50'
-set arrow from graph 0, first 1.03365 to graph 1, first 1.03365 nohead dt 2 lw 2 lc rgb 'gray50'
-set label "" at graph 0.01, first 1.03365 offset 0,0.6 tc rgb 'gray50'
+set arrow from graph 0, first 1.0359 to graph 1, first 1.0359 nohead dt 2 lw 2 lc rgb 'black'
+set label "mt19937 mean" at graph 0.01, first 1.0359 offset 0,0.6 tc rgb 'black'
+set arrow from graph 0, first 1.03816 to graph 1, first 1.03816 nohead dt 2 lw 2 lc rgb 'gray50'
+set label "" at graph 0.01, first 1.03816 offset 0,0.6 tc rgb 'gray50'
+set arrow from graph 0, first 1.03364 to graph 1, first 1.03364 nohead dt 2 lw 2 lc rgb 'gray50'
+set label "" at graph 0.01, first 1.03364 offset 0,0.6 tc rgb 'gray50'
 plot "data/temperature_vs_rounds_uniform_0.dat" using 1:2:3 with yerrorlines lw 2 pt 7 title "tea32 distance", \
      "data/temperature_vs_rounds_uniform_1.dat" using 1:2:3 with yerrorlines lw 2 pt 7 title "tea64 distance"
