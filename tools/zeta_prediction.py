@@ -7,7 +7,8 @@ variant the shift of k_BT against the reference that the effective noise power p
 with its standard error, and the shift measured against the reference at the same settings with its 95 % CI.
 It writes one table, RESULTS/zeta_prediction.csv by default: a row per variant, the agreement flag
 ("agrees" when the 95 % interval of predicted - measured holds 0, "fails" when it does not, "not applicable"
-when either side is missing) and, where it is not "agrees", the reason in words.
+when either side is missing) and, where it is not "agrees", the reason in words. Each row is its own 95 %
+check: over many rows a correct prediction fails about one time in twenty, as the summary line says.
 
 A study whose report has no zeta.csv, or a zeta.csv written before the effective power was predicted, gets
 one row saying so. Python 3 standard library only.
@@ -161,8 +162,11 @@ def main(argv):
     counts = {}
     for r in rows:
         counts[r["agreement"]] = counts.get(r["agreement"], 0) + 1
-    print("{}: {} rows from {} studies ({})".format(
-        out, len(rows), len(studies), ", ".join("{} {}".format(v, k) for k, v in sorted(counts.items()))))
+    judged = counts.get("agrees", 0) + counts.get("fails", 0)
+    print("{}: {} rows from {} studies ({}); a correct prediction fails the 95 % check by chance in about {:.1f} "
+          "of the {} judged rows".format(out, len(rows), len(studies),
+                                         ", ".join("{} {}".format(v, k) for k, v in sorted(counts.items())),
+                                         0.05 * judged, judged))
     return 0
 
 

@@ -318,16 +318,17 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
   md << "## The paper's figures against rounds (Figs. 3a, 4b, 4d, 5b, 6b)\n\n"
      << "From the same cells: the kinetic temperature against the step (Fig. 3a; the replicas' mean series, "
         "thinned to at most 1 000 points, for MT and each family's fewest and most rounds); T_x, T_y, T_z with "
-        "their replicas' 95 % CIs (4b; MT's as dashed levels); their shifts against MT (4d), the diffusion "
-        "coefficient's (5b) and g(r)'s (6b, the kept bin whose 95 % CI reaches furthest from 0), in %, with the "
-        "95 % CIs of the comparisons behind the verdicts. Data: `rounds_figures.csv`.\n\n";
+        "their replicas' 95 % CIs (4b; MT's as dashed levels); the error rates against MT, |shift| in % on a log "
+        "axis with the 95 % CIs of the comparisons behind the verdicts (down to the floor where a CI holds 0), of "
+        "the components (4d), the diffusion coefficient (5b) and g(r) (6b, the kept bin whose 95 % CI reaches "
+        "furthest from 0). Data, with the signed shifts: `rounds_figures.csv`.\n\n";
   bool any_rounds_chart = false;
   for (const auto& d : dists)
     for (const auto& [n, alt] : {std::pair{"temperature_series_", "Fig. 3a: kinetic temperature against the step"},
                                  std::pair{"temperature_components_vs_rounds_", "Fig. 4b: T_x, T_y, T_z against rounds"},
-                                 std::pair{"temperature_components_shift_vs_rounds_", "Fig. 4d: their shifts against MT"},
-                                 std::pair{"diffusion_shift_vs_rounds_", "Fig. 5b: D's shift against MT"},
-                                 std::pair{"rdf_shift_vs_rounds_", "Fig. 6b: g(r)'s shift against MT"}})
+                                 std::pair{"temperature_components_shift_vs_rounds_", "Fig. 4d: their error rates against MT"},
+                                 std::pair{"diffusion_shift_vs_rounds_", "Fig. 5b: D's error rate against MT"},
+                                 std::pair{"rdf_shift_vs_rounds_", "Fig. 6b: g(r)'s error rate against MT"}})
       if (have(n + d)) md << chart(n + d, std::string(alt) + ", " + d), any_rounds_chart = true;
   if (!any_rounds_chart) md << "(no chart: charts were not requested, or the cells hold none of these data)\n\n";
 

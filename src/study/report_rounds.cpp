@@ -1,6 +1,7 @@
 // The paper's per-round figures from the study's cells: the per-component temperature with its CI (its Fig. 4b),
 // the components' shift against the reference (4d), the diffusion coefficient's (5b) and g(r)'s (6b), each
 // against the rounds with 95 % CIs, as charts and as report/rounds_figures.csv.
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -16,6 +17,8 @@ namespace {
 
 using detail::num;
 
+constexpr double kRoundsFloor = 1e-3;  // % : the log axis's floor for an error whose CI holds 0
+
 struct RoundsFigure {
   const char* id;          // the paper's figure
   const char* name;        // chart base name
@@ -30,12 +33,12 @@ const std::vector<RoundsFigure>& rounds_figure_specs() {
       {"4b", "temperature_components_vs_rounds", "Kinetic temperature per component, replica mean ± 95 % CI",
        "k_BT_α = Σv_α²/(N − 1) (k_BT units)", {"temperature_x_mean", "temperature_y_mean", "temperature_z_mean"},
        false},
-      {"4d", "temperature_components_shift_vs_rounds", "Shift of each temperature component against MT, 95 % CI",
-       "(T_α − T_α,MT) / T_α,MT (%)", {"temperature_x_mean", "temperature_y_mean", "temperature_z_mean"}, true},
-      {"5b", "diffusion_shift_vs_rounds", "Shift of the diffusion coefficient against MT, 95 % CI",
-       "(D − D_MT) / D_MT (%)", {"diffusion_coefficient"}, true},
-      {"6b", "rdf_shift_vs_rounds", "g(r) against MT: the bin whose 95 % CI reaches furthest from 0",
-       "(g − g_MT) / g_MT in that bin (%)", {"rdf_vs_mt"}, true},
+      {"4d", "temperature_components_shift_vs_rounds", "Error rate of each temperature component against MT, |shift| with its 95 % CI",
+       "(T_α − T_{α,MT}) / T_{α,MT}", {"temperature_x_mean", "temperature_y_mean", "temperature_z_mean"}, true},
+      {"5b", "diffusion_shift_vs_rounds", "Error rate of the diffusion coefficient against MT, |shift| with its 95 % CI",
+       "(D − D_{MT}) / D_{MT}", {"diffusion_coefficient"}, true},
+      {"6b", "rdf_shift_vs_rounds", "Error rate of g(r) against MT: |shift| of the bin whose 95 % CI reaches furthest from 0",
+       "(g − g_{MT}) / g_{MT} in that bin", {"rdf_vs_mt"}, true},
   };
   return f;
 }
@@ -117,7 +120,13 @@ std::vector<std::string> write_rounds_charts(const std::vector<RoundsRow>& rows,
     if (c.name.empty()) {
       c = detail::Chart{name, std::string(f->title) + " (" + k.noise() + "; the paper's Fig. " + f->id + ")",
                         "rounds", f->ylabel, true, false, "", {}, false};
-      if (f->shift) c.extra = "set arrow from graph 0, first 0 to graph 1, first 0 nohead dt 2 lw 2 lc rgb 'black'\n";
+      // Errors span from a few 0.1 % to thousands of % (64TEA(1)): |shift| on a log axis, the paper's error
+      // rate; the bars span |shift| over the 95 % CI, down to the floor when the CI holds 0.
+      c.logy = f->shift;
+      if (f->shift) {
+        c.ylabel = std::string("|") + f->ylabel + "| in % (log scale; floor " + num(kRoundsFloor) + " %: CI holds 0)";
+        c.extra = "set yrange [" + num(kRoundsFloor) + ":*]\n";
+      }
       c.auto_logy = !f->shift;  // 64TEA(1)'s components reach tens of k_BT
     }
     const std::string component = observable_label(r.observable);
@@ -136,7 +145,15 @@ std::vector<std::string> write_rounds_charts(const std::vector<RoundsRow>& rows,
     auto& l = lines[name][title];
     l.title = title;
     l.style = "using 1:2:3:4 with yerrorlines lw 2 pt 7";
-    l.rows.push_back({double(k.rounds), r.value, r.ci_low, r.ci_high});
+    if (f->shift) {
+      const double top = std::max(std::abs(r.ci_low), std::abs(r.ci_high));
+      const double bottom = r.ci_low <= 0 && r.ci_high >= 0 ? kRoundsFloor
+                                                            : std::min(std::abs(r.ci_low), std::abs(r.ci_high));
+      l.rows.push_back({double(k.rounds), std::max(std::abs(r.value), kRoundsFloor), std::max(bottom, kRoundsFloor),
+                        top});
+    } else {
+      l.rows.push_back({double(k.rounds), r.value, r.ci_low, r.ci_high});
+    }
   }
   const bool run = detail::has_gnuplot();
   std::vector<std::string> made;
