@@ -346,9 +346,9 @@ fs::path write_stability_report(const StudyConfig& config, const std::vector<Cel
         "Step seconds: the median over the method's stable points of each point's median step time; measured on "
      << cpu_text(a)
      << ", cells running side by side, so the absolute times carry the machine's load and the ratios are the "
-        "comparable figures. Jdpd's factors: relative computation times of its integration types with GW-MVV = 1 "
-        "(van den Broek, Kuhn & Zielesny, J. Cheminform. 10, 25 (2018)); \"not sourced\" where Jdpd publishes "
-        "none. From `ranking.csv`.\n\n"
+        "comparable figures. Jdpd's factors: the relative computation times Jdpd (the Java DPD kernel of van den "
+        "Broek, Kuhn & Zielesny, J. Cheminform. 10, 25 (2018)) names for its integration types, GW-MVV = 1, as "
+        "quoted, not re-measured here; \"not sourced\" where it names none. From `ranking.csv`.\n\n"
      << ranking_markdown(ranks, kTolerance) << "\n"
      << shardlow_against_mvv065(ranks);
   if (have("accuracy_cost_integrators"))

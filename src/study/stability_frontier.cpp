@@ -75,9 +75,9 @@ std::string bracket_text(const Frontier& f) {
          (std::isfinite(f.outside) ? exact_decimal(f.outside) : std::string("none in the sweep"));
 }
 
-// Jdpd's relative computation times of its integration types, GW-MVV = 1 (van den Broek, Kuhn & Zielesny,
-// J. Cheminform. 10, 25 (2018), as quoted by the integrators' specification: GWMVV 1.0, S1MVV 1.1, SCMVV with one
-// dissipative iteration 1.4 and with five 2.3, PNHLN 1.9). Other iteration counts have no published factor.
+// The relative computation times Jdpd (van den Broek, Kuhn & Zielesny, J. Cheminform. 10, 25 (2018)) names for
+// its integration types, GW-MVV = 1: GWMVV 1.0, S1MVV 1.1, SCMVV with one dissipative iteration 1.4 and with five
+// 2.3, PNHLN 1.9. Quoted, not re-measured; other iteration counts have no named factor.
 double jdpd_cost_factor(const std::string& integrator) {
   if (integrator.empty() || integrator.rfind("mvv:", 0) == 0) return 1.0;
   if (integrator == "shardlow") return 1.1;

@@ -73,6 +73,22 @@ TEST(StudyConfig, ErrorsNameTheKey) {
   EXPECT_NE(error_of(with(kMinimal, "replicas = 2", "replicas = \"2\"")).find("study.replicas: must be an integer"),
             std::string::npos);
   EXPECT_NE(error_of("[study\nname = 1").find("cfg.toml:1"), std::string::npos);
+  // The reference never has fewer replicas than the variants it judges.
+  EXPECT_NE(error_of(with(kMinimal, "replicas = 2", "replicas = 2\nreference_replicas = 1"))
+                .find("study.reference_replicas: out of range"),
+            std::string::npos);
+}
+
+// reference_replicas: absent, or equal to replicas, leaves the canonical form (and the hash) as it was; more
+// reference replicas are part of it.
+TEST(StudyConfig, ReferenceReplicasKeepOldHashes) {
+  const auto base = parse_config(kMinimal, "c.toml");
+  EXPECT_EQ(base.reference_replica_count(), base.replicas);
+  EXPECT_EQ(parse_config(with(kMinimal, "replicas = 2", "replicas = 2\nreference_replicas = 2"), "c.toml").hash,
+            base.hash);
+  const auto more = parse_config(with(kMinimal, "replicas = 2", "replicas = 2\nreference_replicas = 5"), "c.toml");
+  EXPECT_NE(more.hash, base.hash);
+  EXPECT_EQ(more.reference_replica_count(), 5);
 }
 
 // The error-control rule: study-wide by default; "variant" on request; anything else names the key. The

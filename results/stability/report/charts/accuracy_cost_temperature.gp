@@ -10,26 +10,29 @@ set logscale y
 set logscale x
 plot "data/accuracy_cost_temperature_0.dat" using 1:2 with linespoints pt 7 lw 2 lc 1 title "mvv:0.5 mt19937 gauss", \
      "data/accuracy_cost_temperature_1.dat" using 1:2 with linespoints pt 7 lw 2 lc 2 title "mvv:0.5 tea32(1) gauss", \
-     "data/accuracy_cost_temperature_2.dat" using 1:2 with linespoints pt 7 lw 2 lc 3 title "mvv:0.5 tea32(4) gauss", \
-     "data/accuracy_cost_temperature_3.dat" using 1:2 with linespoints pt 7 lw 2 lc 4 title "mvv:0.5 philox4x32(10) gauss", \
-     "data/accuracy_cost_temperature_4.dat" using 1:2 with linespoints pt 7 lw 2 lc 5 title "mvv:0.5 mt19937 gauss-blocks", \
-     "data/accuracy_cost_temperature_5.dat" using 1:2 with linespoints pt 7 lw 2 lc 6 title "mvv:0.5 tea32(1) gauss-blocks", \
-     "data/accuracy_cost_temperature_6.dat" using 1:2 with linespoints pt 7 lw 2 lc 7 title "mvv:0.5 tea32(4) gauss-blocks", \
-     "data/accuracy_cost_temperature_7.dat" using 1:2 with linespoints pt 7 lw 2 lc 8 title "mvv:0.5 philox4x32(10) gauss-blocks", \
-     "data/accuracy_cost_temperature_8.dat" using 1:2 with linespoints pt 7 lw 2 lc 9 title "mvv:0.65 mt19937 gauss", \
-     "data/accuracy_cost_temperature_9.dat" using 1:2 with linespoints pt 7 lw 2 lc 10 title "mvv:0.65 tea32(1) gauss", \
-     "data/accuracy_cost_temperature_10.dat" using 1:2 with linespoints pt 7 lw 2 lc 11 title "mvv:0.65 tea32(4) gauss", \
-     "data/accuracy_cost_temperature_11.dat" using 1:2 with linespoints pt 7 lw 2 lc 12 title "mvv:0.65 philox4x32(10) gauss", \
-     "data/accuracy_cost_temperature_12.dat" using 1:2 with linespoints pt 7 lw 2 lc 13 title "mvv:0.65 mt19937 gauss-blocks", \
-     "data/accuracy_cost_temperature_13.dat" using 1:2 with linespoints pt 7 lw 2 lc 14 title "mvv:0.65 tea32(1) gauss-blocks", \
-     "data/accuracy_cost_temperature_14.dat" using 1:2 with linespoints pt 7 lw 2 lc 15 title "mvv:0.65 tea32(4) gauss-blocks", \
-     "data/accuracy_cost_temperature_15.dat" using 1:2 with linespoints pt 7 lw 2 lc 16 title "mvv:0.65 philox4x32(10) gauss-blocks", \
-     "data/accuracy_cost_temperature_16.dat" using 1:2 with linespoints pt 7 lw 2 lc 17 title "shardlow mt19937 gauss", \
-     "data/accuracy_cost_temperature_17.dat" using 1:2 with linespoints pt 7 lw 2 lc 18 title "shardlow tea32(1) gauss", \
-     "data/accuracy_cost_temperature_18.dat" using 1:2 with linespoints pt 7 lw 2 lc 19 title "shardlow tea32(4) gauss", \
-     "data/accuracy_cost_temperature_19.dat" using 1:2 with linespoints pt 7 lw 2 lc 20 title "shardlow philox4x32(10) gauss", \
-     "data/accuracy_cost_temperature_20.dat" using 1:2 with linespoints pt 7 lw 2 lc 21 title "shardlow mt19937 gauss-blocks", \
-     "data/accuracy_cost_temperature_21.dat" using 1:2 with linespoints pt 7 lw 2 lc 22 title "shardlow tea32(1) gauss-blocks", \
-     "data/accuracy_cost_temperature_22.dat" using 1:2 with linespoints pt 7 lw 2 lc 23 title "shardlow tea32(4) gauss-blocks", \
-     "data/accuracy_cost_temperature_23.dat" using 1:2 with linespoints pt 7 lw 2 lc 24 title "shardlow philox4x32(10) gauss-blocks", \
-     "data/accuracy_cost_temperature_24.dat" using 1:2 with points pt 2 ps 2 lw 2 lc rgb 'red' title "all replicas blew up"
+     "data/accuracy_cost_temperature_2.dat" using 1:2 with linespoints pt 7 lw 2 lc 3 title "mvv:0.5 mt19937 gauss-blocks", \
+     "data/accuracy_cost_temperature_3.dat" using 1:2 with linespoints pt 7 lw 2 lc 4 title "mvv:0.5 tea32(1) gauss-blocks", \
+     "data/accuracy_cost_temperature_4.dat" using 1:2 with linespoints pt 7 lw 2 lc 5 title "mvv:0.5 mt19937 gauss γ4.5", \
+     "data/accuracy_cost_temperature_5.dat" using 1:2 with linespoints pt 7 lw 2 lc 6 title "mvv:0.65 mt19937 gauss", \
+     "data/accuracy_cost_temperature_6.dat" using 1:2 with linespoints pt 7 lw 2 lc 7 title "mvv:0.65 tea32(1) gauss", \
+     "data/accuracy_cost_temperature_7.dat" using 1:2 with linespoints pt 7 lw 2 lc 8 title "mvv:0.65 mt19937 gauss-blocks", \
+     "data/accuracy_cost_temperature_8.dat" using 1:2 with linespoints pt 7 lw 2 lc 9 title "mvv:0.65 tea32(1) gauss-blocks", \
+     "data/accuracy_cost_temperature_9.dat" using 1:2 with linespoints pt 7 lw 2 lc 10 title "mvv:0.65 mt19937 gauss γ4.5", \
+     "data/accuracy_cost_temperature_10.dat" using 1:2 with linespoints pt 7 lw 2 lc 11 title "shardlow mt19937 gauss", \
+     "data/accuracy_cost_temperature_11.dat" using 1:2 with linespoints pt 7 lw 2 lc 12 title "shardlow tea32(1) gauss", \
+     "data/accuracy_cost_temperature_12.dat" using 1:2 with linespoints pt 7 lw 2 lc 13 title "shardlow mt19937 gauss-blocks", \
+     "data/accuracy_cost_temperature_13.dat" using 1:2 with linespoints pt 7 lw 2 lc 14 title "shardlow tea32(1) gauss-blocks", \
+     "data/accuracy_cost_temperature_14.dat" using 1:2 with linespoints pt 7 lw 2 lc 15 title "shardlow mt19937 gauss γ4.5", \
+     "data/accuracy_cost_temperature_15.dat" using 1:2 with linespoints pt 7 lw 2 lc 16 title "scmvv:1 mt19937 gauss", \
+     "data/accuracy_cost_temperature_16.dat" using 1:2 with linespoints pt 7 lw 2 lc 17 title "scmvv:1 tea32(1) gauss", \
+     "data/accuracy_cost_temperature_17.dat" using 1:2 with linespoints pt 7 lw 2 lc 18 title "scmvv:1 mt19937 gauss-blocks", \
+     "data/accuracy_cost_temperature_18.dat" using 1:2 with linespoints pt 7 lw 2 lc 19 title "scmvv:1 tea32(1) gauss-blocks", \
+     "data/accuracy_cost_temperature_19.dat" using 1:2 with linespoints pt 7 lw 2 lc 20 title "scmvv:1 mt19937 gauss γ4.5", \
+     "data/accuracy_cost_temperature_20.dat" using 1:2 with linespoints pt 7 lw 2 lc 21 title "scmvv:5 mt19937 gauss", \
+     "data/accuracy_cost_temperature_21.dat" using 1:2 with linespoints pt 7 lw 2 lc 22 title "scmvv:5 tea32(1) gauss", \
+     "data/accuracy_cost_temperature_22.dat" using 1:2 with linespoints pt 7 lw 2 lc 23 title "scmvv:5 mt19937 gauss-blocks", \
+     "data/accuracy_cost_temperature_23.dat" using 1:2 with linespoints pt 7 lw 2 lc 24 title "scmvv:5 tea32(1) gauss-blocks", \
+     "data/accuracy_cost_temperature_24.dat" using 1:2 with linespoints pt 7 lw 2 lc 25 title "scmvv:5 mt19937 gauss γ4.5", \
+     "data/accuracy_cost_temperature_25.dat" using 1:2 with linespoints pt 7 lw 2 lc 26 title "pnhln:10 mt19937 gauss", \
+     "data/accuracy_cost_temperature_26.dat" using 1:2 with linespoints pt 7 lw 2 lc 27 title "pnhln:10 mt19937 gauss γ4.5", \
+     "data/accuracy_cost_temperature_27.dat" using 1:2 with points pt 2 ps 2 lw 2 lc rgb 'red' title "all replicas blew up"

@@ -1,0 +1,14 @@
+# scmvv:5: configurational temperature against dt, 95 % CIs (within 10 %)
+# Rendered by: gnuplot -e "set terminal svg; set output 'x.svg'" crossing_conf_scmvv_5.gp
+set title "scmvv:5: configurational temperature against dt, 95 % CIs (within 10 %)" noenhanced
+set xlabel "dt (DPD time units)"
+set ylabel "<T_conf> - 1 (%)"
+set grid
+set key outside right top noenhanced
+set datafile missing "nan"
+set grid
+set key outside right
+plot "data/crossing_conf_scmvv_5_0.dat" using 1:2:3 with yerrorlines pt 7 lw 2 lc 1 title "mt19937 gauss", \
+     "data/crossing_conf_scmvv_5_1.dat" using 1:2:3 with yerrorlines pt 7 lw 2 lc 2 title "tea32(1) gauss", \
+     "data/crossing_conf_scmvv_5_2.dat" using 1:2:3 with yerrorlines pt 7 lw 2 lc 3 title "mt19937 gauss-blocks", \
+     "data/crossing_conf_scmvv_5_3.dat" using 1:2:3 with yerrorlines pt 7 lw 2 lc 4 title "tea32(1) gauss-blocks"
