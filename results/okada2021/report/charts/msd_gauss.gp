@@ -8,7 +8,7 @@ set key outside right top noenhanced
 set datafile missing "nan"
 set logscale x 2
 set logscale y
-set xrange [0.8:*]
+set xrange [0.32:*]
 plot "data/msd_gauss_0.dat" using 1:2 with lines lw 4 lc rgb 'black' title "mt19937 (reference, 16 replicas)", \
      "data/msd_gauss_1.dat" using 1:2 with lines lw 2 title "tea32(1) distance", \
      "data/msd_gauss_2.dat" using 1:2 with lines lw 2 dt 3 title "tea32(32) distance", \

@@ -9,8 +9,8 @@ set datafile missing "nan"
 set logscale x 2
 set logscale y
 set xrange [0.8:*]
-set arrow from graph 0, first 4.12726 to graph 1, first 4.12726 nohead dt 2 lw 2 lc rgb 'black'
-set label "mt19937" at graph 0.01, first 4.12726 offset 0,0.6 tc rgb 'black'
+set arrow from graph 0, first 8.64343 to graph 1, first 8.64343 nohead dt 2 lw 2 lc rgb 'black'
+set label "mt19937" at graph 0.01, first 8.64343 offset 0,0.6 tc rgb 'black'
 plot "data/cost_vs_rounds_gauss-blocks_0.dat" using 1:2 with linespoints lw 2 pt 7 title "philox4x32 distance", \
      "data/cost_vs_rounds_gauss-blocks_1.dat" using 1:2 with linespoints lw 2 pt 7 title "philox4x32 pair-step", \
      "data/cost_vs_rounds_gauss-blocks_2.dat" using 1:2 with linespoints lw 2 pt 7 title "saru distance", \

@@ -9,8 +9,8 @@ set datafile missing "nan"
 set logscale x 2
 set logscale y
 set xrange [0.8:*]
-set arrow from graph 0, first 2.08197 to graph 1, first 2.08197 nohead dt 2 lw 2 lc rgb 'black'
-set label "mt19937" at graph 0.01, first 2.08197 offset 0,0.6 tc rgb 'black'
+set arrow from graph 0, first 4.77454 to graph 1, first 4.77454 nohead dt 2 lw 2 lc rgb 'black'
+set label "mt19937" at graph 0.01, first 4.77454 offset 0,0.6 tc rgb 'black'
 plot "data/cost_vs_rounds_gauss_0.dat" using 1:2 with linespoints lw 2 pt 7 title "philox4x32 distance", \
      "data/cost_vs_rounds_gauss_1.dat" using 1:2 with linespoints lw 2 pt 7 title "philox4x32 pair-step", \
      "data/cost_vs_rounds_gauss_2.dat" using 1:2 with linespoints lw 2 pt 7 title "saru distance", \

@@ -8,8 +8,8 @@ set key outside right top noenhanced
 set datafile missing "nan"
 set logscale x 2
 set xrange [0.8:*]
-set arrow from graph 0, first 0.408428 to graph 1, first 0.408428 nohead dt 2 lw 2 lc rgb 'black'
-set label "mt19937" at graph 0.01, first 0.408428 offset 0,0.6 tc rgb 'black'
+set arrow from graph 0, first 0.402772 to graph 1, first 0.402772 nohead dt 2 lw 2 lc rgb 'black'
+set label "mt19937" at graph 0.01, first 0.402772 offset 0,0.6 tc rgb 'black'
 plot "data/step_vs_rounds_gauss_0.dat" using 1:2 with linespoints lw 2 pt 7 title "philox4x32 distance", \
      "data/step_vs_rounds_gauss_1.dat" using 1:2 with linespoints lw 2 pt 7 title "philox4x32 pair-step", \
      "data/step_vs_rounds_gauss_2.dat" using 1:2 with linespoints lw 2 pt 7 title "saru distance", \
