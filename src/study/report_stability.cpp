@@ -334,7 +334,10 @@ fs::path write_stability_report(const StudyConfig& config, const std::vector<Cel
         "at which a replica blew up. The frontier lies between them; Δt in between have CIs that straddle the "
         "band's edge (more replicas would resolve them). A Δt below *inside* whose CI lies wholly outside is listed: "
         "an accurate Δt above an inaccurate one is errors cancelling, not accuracy. k_BT is the kinetic temperature, "
-        "T_conf the configurational one (Rugh's ⟨|∇U|²⟩/⟨∇²U⟩ over the conservative potential). From `frontier.csv`."
+        "T_conf the configurational one (Rugh's ⟨|∇U|²⟩/⟨∇²U⟩ over the conservative potential). A CI is Student's t "
+        "on one replica's variance pooled over every method at the same integrator, Δt and γ (the generators and "
+        "noises change the temperature, not how much a run of this length scatters), unless the point's own "
+        "replicas vary more than that pool (one-sided F test at 5 %). From `frontier.csv`."
         "\n\n"
      << frontier_markdown(a, kTolerance) << "\n";
 

@@ -7,6 +7,8 @@
 #include <map>
 
 #include "dpdrng/common/numbers.hpp"
+#include "dpdrng/stats/mean_tests.hpp"
+#include "dpdrng/stats/summary.hpp"
 #include "report_chart.hpp"
 
 namespace dpdrng::study {
@@ -62,6 +64,46 @@ void accuracy_of(const std::vector<const CellResult*>& ok, const StabilityAnalys
   p.seconds_per_time = p.step_seconds / p.dt;
 }
 
+// The values of `name` over a point's stable replicas.
+std::vector<double> values(const std::vector<const CellResult*>& ok, const std::string& name) {
+  std::vector<double> v;
+  for (const auto* c : ok)
+    if (c->has(name) && std::isfinite(c->scalar(name, NAN))) v.push_back(c->scalar(name, NAN));
+  return v;
+}
+
+// The 95 % half-width of a point's replica mean with one replica's variance pooled from its own replicas and
+// those of every other method at the same integrator, Δt and γ (other generators and noises: the replicas' spread
+// is the run length's and the scene's, not the noise's), weighted by their degrees of freedom, unless its own
+// replicas vary more than the pool (stats::paired_t's consistency test); NaN without any spread.
+double pooled_half_width(const std::vector<double>& own, const std::vector<std::vector<double>>& others) {
+  std::vector<stats::VarianceEstimate> extra;
+  for (const auto& g : others)
+    if (g.size() >= 2) extra.push_back({std::pow(stats::sample_sd(g), 2), double(g.size() - 1)});
+  if (own.empty()) return NAN;
+  const stats::TTest t = stats::paired_t(own, extra);
+  return t.ci_half_width(0.95);
+}
+
+// Each point's k_BT and T_conf CIs under the pooled model (`oks`: each point's stable cells, in point order).
+void pool_cis(StabilityAnalysis& a, const std::vector<std::vector<const CellResult*>>& oks) {
+  for (const char* name : {"temperature_mean", "temperature_conf_mean"}) {
+    const bool conf = std::string(name) == "temperature_conf_mean";
+    for (std::size_t k = 0; k < a.points.size(); ++k) {
+      StabilityPoint& p = a.points[k];
+      if (oks[k].empty()) continue;
+      std::vector<std::vector<double>> others;
+      for (std::size_t j = 0; j < a.points.size(); ++j) {
+        const StabilityPoint& q = a.points[j];
+        if (j != k && q.integrator == p.integrator && q.dt == p.dt && q.gamma == p.gamma)
+          others.push_back(values(oks[j], name));
+      }
+      const double h = pooled_half_width(values(oks[k], name), others);
+      (conf ? p.temperature_conf_ci : p.temperature_ci) = h;
+    }
+  }
+}
+
 }  // namespace
 
 std::string StabilityPoint::method() const {
@@ -103,6 +145,7 @@ StabilityAnalysis analyse_stability(const StudyConfig& config, const std::vector
     if (!groups.count(m)) order.push_back(m);
     groups[m][c->cell.dt].push_back(c);
   }
+  std::vector<std::vector<const CellResult*>> oks;  // each point's stable cells
   for (const auto& m : order)
     for (const auto& [dt, group] : groups[m]) {
       StabilityPoint p;
@@ -126,7 +169,9 @@ StabilityAnalysis analyse_stability(const StudyConfig& config, const std::vector
       p.stable = ok.size();
       if (!ok.empty()) accuracy_of(ok, a, p);
       a.points.push_back(std::move(p));
+      oks.push_back(std::move(ok));
     }
+  pool_cis(a, oks);
   return a;
 }
 

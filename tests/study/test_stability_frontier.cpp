@@ -3,8 +3,11 @@
 // configurational temperature, the crossing table's noise and integrator errors equal the hand computation, and
 // the reference_gammas series runs the reference alone with exact cell ids.
 //
-// Two replicas at m − d and m + d have the mean m and the 95 % half-width t(0.975; 1) · s / √2 = t(0.975; 1) · d,
-// with t(0.975; 1) = 12.7062047361747 (Student's t, one degree of freedom: Abramowitz & Stegun, Table 26.10).
+// Two replicas at m − d and m + d have the mean m and the spread s = d√2. A point's CI pools one replica's variance
+// with the other generators' at the same integrator and Δt: two points of two replicas at offset d each give
+// s² = 2d², 2 degrees of freedom and the 95 % half-width t(0.975; 2) · s / √2 = t(0.975; 2) · d, with
+// t(0.975; 2) = 4.30265272991 (Student's t: Abramowitz & Stegun, Table 26.10); a point alone at its integrator and
+// Δt keeps t(0.975; 1) · d, t(0.975; 1) = 12.7062047361747.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -24,6 +27,7 @@ using dpdrng::study::config_text::StudyText;
 namespace {
 
 constexpr double kT1 = 12.7062047361747;  // t(0.975; 1)
+constexpr double kT2 = 4.302652729911275;  // t(0.975; 2)
 
 struct Reading {
   double t = NAN, d = 1e-4;  // kinetic mean and replica offset (NaN: the cell blew up)
@@ -70,10 +74,10 @@ StudyConfig config_of(const std::string& integrators, const std::string& dts, co
 
 }  // namespace
 
-// MT: 1.006 ± 0.0013 at Δt 0.05 is inside ±1 %; 1.009 ± 0.0025 at 0.1 straddles the edge (its point estimate is
+// MT: 1.006 ± 0.0004 at Δt 0.05 is inside ±1 %; 1.009 ± 0.0017 at 0.1 straddles the edge (its point estimate is
 // inside); 1.05 at 0.2 is outside. The bracket is 0.05 – 0.2: a frontier from point estimates would say 0.1, and
 // one that took the first non-inside Δt as "outside" would say 0.1 too.
-// 32TEA(1): −3 % at 0.02, inside at 0.05, straddling at 0.1 (0.992 ± 0.0025), +3 % at 0.2: its inside Δt lies
+// 32TEA(1): −3 % at 0.02, inside at 0.05, straddling at 0.1 (0.991 ± 0.0017), +3 % at 0.2: its inside Δt lies
 // above an outside one, which the frontier lists (a cancellation, not accuracy).
 TEST(StabilityFrontier, BracketComesFromTheCisNotThePointEstimates) {
   const StudyConfig c = config_of(R"(["mvv:0.5"])", "[0.02, 0.05, 0.1, 0.2, 0.3]");
@@ -81,18 +85,18 @@ TEST(StabilityFrontier, BracketComesFromTheCisNotThePointEstimates) {
   const std::string mvv = "mvv:0.5";
   t[{mvv, "mt19937", "gauss", 0.02}] = {1.002};
   t[{mvv, "mt19937", "gauss", 0.05}] = {1.006};
-  t[{mvv, "mt19937", "gauss", 0.1}] = {1.009, 2e-4};
+  t[{mvv, "mt19937", "gauss", 0.1}] = {1.009, 4e-4};
   t[{mvv, "mt19937", "gauss", 0.2}] = {1.05};
   t[{mvv, "tea32(1)", "gauss", 0.02}] = {0.97};
   t[{mvv, "tea32(1)", "gauss", 0.05}] = {0.995};
-  t[{mvv, "tea32(1)", "gauss", 0.1}] = {0.992, 2e-4};
+  t[{mvv, "tea32(1)", "gauss", 0.1}] = {0.991, 4e-4};
   t[{mvv, "tea32(1)", "gauss", 0.2}] = {1.03};
   const StabilityAnalysis a = analyse_stability(c, cells_from(c, t));
   const StabilityPoint* straddle = nullptr;
   for (const auto& p : a.points)
     if (p.reference && p.dt == 0.1) straddle = &p;
   ASSERT_NE(straddle, nullptr);
-  EXPECT_NEAR(straddle->temperature_ci, kT1 * 2e-4, 1e-12);
+  EXPECT_NEAR(straddle->temperature_ci, kT2 * 4e-4, 1e-12);
 
   const Frontier mt = accuracy_frontier(a, "mvv:0.5 mt19937 gauss", Thermometer::kinetic, 0.01);
   EXPECT_EQ(mt.inside, 0.05);
@@ -147,17 +151,19 @@ TEST(StabilityFrontier, PnhlnIsRankedByItsConfigurationalTemperature) {
   EXPECT_NE(ranking_markdown(r, 0.01).find("| 2 | pnhln:10 | configurational | 0.02 – 0.05 |"), std::string::npos);
 }
 
-// GW-MVV λ = 0.5 at Δt 0.04: MT19937 runs hot (halves 1.036 ± t·1e-3, blocks 1.037 ± t·5e-4); 32TEA(1) halves
-// reads 1.001, blocks 1.020. By hand: halves noise error 1.001 − 1.036 = −0.035 ± √2·t·1e-3 against integrator
-// error +0.036 ± t·1e-3, and 1.001 ± t·1e-3 holds 1: they cancel fully; blocks −0.017 ± √2·t·5e-4 against
-// +0.037, and 1.020 ± t·5e-4 does not hold 1: partly.
+// GW-MVV λ = 0.5 at Δt 0.04: MT19937 runs hot (halves 1.036, blocks 1.037); 32TEA(1) halves reads 1.001, blocks
+// 1.020; every point two replicas at ±1e-3, so the pooled variance over the four points has 4 degrees of freedom
+// and each half-width is t(0.975; 4) · 1e-3, t(0.975; 4) = 2.77644510520 (Abramowitz & Stegun, Table 26.10). By
+// hand: halves noise error 1.001 − 1.036 = −0.035 ± √2·t·1e-3 against integrator error +0.036 ± t·1e-3, and
+// 1.001 ± t·1e-3 holds 1: they cancel fully; blocks −0.017 ± √2·t·1e-3 against +0.037, and 1.020 ± t·1e-3 does
+// not hold 1: partly.
 TEST(StabilityFrontier, CrossingTableEqualsHandComputation) {
   const StudyConfig c = config_of(R"(["mvv:0.5", "pnhln:10"])", "[0.04]", "feeds = [\"halves\", \"blocks\"]\n");
   Table t;
   t[{"mvv:0.5", "mt19937", "gauss", 0.04}] = {1.036, 1e-3, 1.001};
-  t[{"mvv:0.5", "mt19937", "gauss-blocks", 0.04}] = {1.037, 5e-4, 1.002};
+  t[{"mvv:0.5", "mt19937", "gauss-blocks", 0.04}] = {1.037, 1e-3, 1.002};
   t[{"mvv:0.5", "tea32(1)", "gauss", 0.04}] = {1.001, 1e-3, 0.966};
-  t[{"mvv:0.5", "tea32(1)", "gauss-blocks", 0.04}] = {1.020, 5e-4, 0.985};
+  t[{"mvv:0.5", "tea32(1)", "gauss-blocks", 0.04}] = {1.020, 1e-3, 0.985};
   t[{"pnhln:10", "mt19937", "gauss", 0.04}] = {1.0, 1e-4, 1.01};
   const auto rows = crossing_rows(analyse_stability(c, cells_from(c, t)));
   ASSERT_EQ(rows.size(), 4u);  // PNHLN draws no pair noise: no row
@@ -172,25 +178,44 @@ TEST(StabilityFrontier, CrossingTableEqualsHandComputation) {
   }
   ASSERT_TRUE(halves && blocks);
   EXPECT_NEAR(halves->noise_shift, 1.001 - 1.036, 1e-12);
-  EXPECT_NEAR(halves->noise_shift_ci, std::sqrt(2.0) * kT1 * 1e-3, 1e-12);
+  constexpr double kT4 = 2.7764451051977987;  // t(0.975; 4)
+  EXPECT_NEAR(halves->noise_shift_ci, std::sqrt(2.0) * kT4 * 1e-3, 1e-12);
   EXPECT_NEAR(halves->integrator_error, 0.036, 1e-12);
-  EXPECT_NEAR(halves->integrator_error_ci, kT1 * 1e-3, 1e-12);
+  EXPECT_NEAR(halves->integrator_error_ci, kT4 * 1e-3, 1e-12);
   EXPECT_NEAR(halves->temperature_conf, 0.966, 1e-12);
   EXPECT_EQ(halves->cancellation, "full");
   EXPECT_NEAR(blocks->noise_shift, 1.020 - 1.037, 1e-12);
-  EXPECT_NEAR(blocks->noise_shift_ci, std::sqrt(2.0) * kT1 * 5e-4, 1e-12);
+  EXPECT_NEAR(blocks->noise_shift_ci, std::sqrt(2.0) * kT4 * 1e-3, 1e-12);
   EXPECT_NEAR(blocks->integrator_error, 0.037, 1e-12);
   EXPECT_EQ(blocks->cancellation, "partial");
   const std::string csv = crossing_csv(rows);
-  EXPECT_NE(csv.find("mvv:0.5,tea32(1),gauss,0.04,1.001,0.0127062,0.966,0.0127062,-0.035,0.0179693,0.036,0.0127062,"
+  EXPECT_NE(csv.find("mvv:0.5,tea32(1),gauss,0.04,1.001,0.00277645,0.966,0.00277645,-0.035,0.00392649,0.036,0.00277645,"
                      "\"full\"\n"),
             std::string::npos)
       << csv;
   const std::string md = crossing_markdown(rows);
-  EXPECT_NE(md.find("- mvv:0.5 tea32(1) gauss at Δt 0.04: noise error -3.50 ± 1.80 % against integrator error +3.60 "
-                    "± 1.27 %"),
+  EXPECT_NE(md.find("- mvv:0.5 tea32(1) gauss at Δt 0.04: noise error -3.50 ± 0.39 % against integrator error +3.60 "
+                    "± 0.28 %"),
             std::string::npos)
       << md;
+}
+
+// A point whose replicas scatter far more than the pool's (offset 1e-2 against 1e-4: F = 10⁴ on 1 and 1 degrees
+// of freedom, upper tail 0.0064 < 0.05) keeps its own t(0.975; 1) · d; the quiet point beside it pools both
+// spreads (its own is not larger), so its CI widens to t(0.975; 2) · √((2·10⁻⁸ + 2·10⁻⁴)/2) / √2.
+TEST(StabilityFrontier, APointThatScattersMoreKeepsItsOwnSpread) {
+  const StudyConfig c = config_of(R"(["mvv:0.5"])", "[0.02]");
+  Table t;
+  t[{"mvv:0.5", "mt19937", "gauss", 0.02}] = {1.0, 1e-4};
+  t[{"mvv:0.5", "tea32(1)", "gauss", 0.02}] = {1.0, 1e-2};
+  const StabilityAnalysis a = analyse_stability(c, cells_from(c, t));
+  ASSERT_EQ(a.points.size(), 2u);
+  for (const auto& p : a.points) {
+    if (p.reference)
+      EXPECT_NEAR(p.temperature_ci, kT2 * std::sqrt((2e-8 + 2e-4) / 2) / std::sqrt(2.0), 1e-10);
+    else
+      EXPECT_NEAR(p.temperature_ci, kT1 * 1e-2, 1e-12);
+  }
 }
 
 TEST(StabilityFrontier, JdpdFactorsOnlyWherePublished) {

@@ -30,8 +30,10 @@ struct StabilityPoint {
   long first_blowup_step = -1;  // earliest step at which a replica blew up (-1: none did)
   std::string reason;           // that replica's reason, without the "unstable at step k: " prefix
   // Replica means over the stable replicas, NaN when none is stable.
-  double temperature = NAN, temperature_ci = NAN;            // ⟨k_BT⟩ and its 95 % half-width (replica_mean)
-  double temperature_conf = NAN, temperature_conf_ci = NAN;  // the configurational temperature, the same way
+  // ⟨k_BT⟩ and ⟨T_conf⟩ with 95 % half-widths whose variance of one replica is pooled over every method at the
+  // same integrator, Δt and γ (the point's own spread alone when it is larger than that pool's).
+  double temperature = NAN, temperature_ci = NAN;
+  double temperature_conf = NAN, temperature_conf_ci = NAN;
   double pressure_conservative = NAN;
   double diffusion = NAN;
   double temperature_error = NAN;    // |⟨k_BT⟩ − 1|
