@@ -75,6 +75,26 @@ std::string Cell::label() const {
   return rng::describe(rng::GeneratorSpec{generator, rounds, rng::kPaperTeaKey});
 }
 
+namespace {
+
+// The reference's cell of one noise, Δt, integrator and replica.
+Cell reference_cell(const StudyConfig& config, rng::Distribution dist, rng::Feed feed, double dt,
+                    const std::string& integrator, int replica, std::uint64_t seed) {
+  Cell ref;
+  ref.generator = config.reference;
+  ref.rounds = 1;
+  ref.distribution = dist;
+  ref.feed = feed;
+  ref.dt = dt;
+  ref.integrator = integrator;
+  ref.replica = replica;
+  ref.reference = true;
+  ref.seed = seed;
+  return ref;
+}
+
+}  // namespace
+
 std::vector<Cell> enumerate_cells(const StudyConfig& config) {
   std::vector<Cell> cells;
   // The battery reads the pair's first block, whatever the feed: only the first feed's cells run it.
@@ -106,16 +126,7 @@ std::vector<Cell> enumerate_cells(const StudyConfig& config) {
             if (reference_only(integ) && !first_noise) continue;
             first_noise = false;
             // Each feed has its own reference: MT19937 under that feed (a control of the feed itself).
-            Cell ref;
-            ref.generator = config.reference;
-            ref.rounds = 1;
-            ref.distribution = dist;
-            ref.feed = feed;
-            ref.dt = dt;
-            ref.integrator = integ;
-            ref.replica = rep;
-            ref.reference = true;
-            ref.seed = seed;
+            Cell ref = reference_cell(config, dist, feed, dt, integ, rep, seed);
             ref.nist = wants_nist(ref.generator, dist, feed, rep) && tapped(integ);
             cells.push_back(ref);
             if (reference_only(integ) || reference_alone) continue;
@@ -133,16 +144,11 @@ std::vector<Cell> enumerate_cells(const StudyConfig& config) {
           }
         // The friction series: the reference under the first noise, as pnhln runs.
         for (const double gamma : config.reference_gammas) {
-          Cell ref;
-          ref.generator = config.reference;
-          ref.distribution = config.distributions.front();
-          ref.feed = ref.distribution == rng::Distribution::gauss ? config.feeds.front() : rng::Feed::halves;
-          ref.dt = dt;
-          ref.integrator = integ;
+          const rng::Distribution dist = config.distributions.front();
+          Cell ref = reference_cell(config, dist, dist == rng::Distribution::gauss ? config.feeds.front()
+                                                                                  : rng::Feed::halves,
+                                    dt, integ, rep, seed);
           ref.gamma = gamma;
-          ref.replica = rep;
-          ref.reference = true;
-          ref.seed = seed;
           cells.push_back(ref);
         }
       }
