@@ -77,11 +77,23 @@ Analysis analyse_block(const StudyConfig& study, const std::vector<const CellRes
 
 bool says_differs(const VariantReport& v, double alpha) { return v.cells.size() > 0 && v.min_p < alpha; }
 
+// The raw P-value of every test of a variant that has one (observables, pass fractions, ζ correlations, ⟨ζ²⟩ = 1).
+void append_p_values(const VariantReport& v, std::vector<double>& out) {
+  for (const auto& o : v.observables)
+    if (o.decision.tested()) out.push_back(o.decision.p);
+  for (const auto& p : v.passes)
+    if (p.decision.tested()) out.push_back(p.decision.p);
+  for (const auto& c : v.correlations)
+    if (c.decision.tested()) out.push_back(c.decision.p);
+  if (v.zeta_decision.tested()) out.push_back(v.zeta_decision.p);
+}
+
 NullRow null_row(const StudyConfig& pool, const std::vector<CellResult>& cells, int replicas, int studies) {
   const StudyConfig study = sub_study(pool, replicas, kGood);
   std::set<std::string> good;
   for (const auto& g : kGood) good.insert(g.name);
   std::size_t alarms = 0, verdicts = 0, alarmed_studies = 0;
+  std::vector<double> p_values;
   for (int s = 0; s < studies; ++s) {
     const Analysis a = analyse_block(study, block(cells, s * replicas, replicas, good));
     bool any = false;
@@ -91,10 +103,11 @@ NullRow null_row(const StudyConfig& pool, const std::vector<CellResult>& cells, 
       if (v.key.reference || !v.no_reference.empty() || v.cells.empty()) continue;
       ++verdicts;
       alarms += d;
+      append_p_values(v, p_values);
     }
     alarmed_studies += any;
   }
-  return {replicas, make_rate(alarms, verdicts), make_rate(alarmed_studies, std::size_t(studies))};
+  return {replicas, make_rate(alarms, verdicts), make_rate(alarmed_studies, std::size_t(studies)), p_values};
 }
 
 double temperature_error(const std::vector<CellResult>& cells, const std::string& generator) {

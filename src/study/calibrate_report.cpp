@@ -86,6 +86,21 @@ std::string summary_markdown(const Calibration& c) {
     md << "| " << n.replicas << " | " << rate_text(n.verdicts) << " | " << rate_text(n.studies) << " |\n";
   md << "\nα = " << c.alpha << " bounds the second column's rate under study-wise control (the reference's own "
      << "tests are in the family too).\n\n";
+  for (const auto& n : c.nulls) {
+    if (n.replicas != c.config_replicas || n.p_values.empty()) continue;
+    std::vector<double> p = n.p_values;
+    std::sort(p.begin(), p.end());
+    const double m = double(p.size()), eps = std::sqrt(std::log(2 / 0.05) / (2 * m));
+    std::size_t outside = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) outside += std::abs(p[i] - (double(i) + 0.5) / m) > eps;
+    md << "Null P-values (`null_p_qq.csv`, `charts/null_p_qq.png`): the " << p.size()
+       << " raw two-sided P-values of every test of every good-generator variant at " << n.replicas
+       << " replicas against the uniform distribution; " << outside
+       << " of them lie outside the simultaneous 95 % band (Dvoretzky–Kiefer–Wolfowitz, ±" << detail::num(eps)
+       << " in P). The tests of one study share its reference, so the P-values are not independent and the band "
+          "is a guide, not a test. Smallest: "
+       << detail::p_text(p.front()) << ".\n\n";
+  }
   if (!c.power.empty()) {
     md << "## Power\n\n| defect | size | replicas | detected [95 % CI] | T error (measured) |\n|---|---|---|---|---|\n";
     for (const auto& p : c.power)
@@ -174,6 +189,59 @@ void false_alarm_chart(const Calibration& c, const fs::path& dir, bool run, std:
   detail::render(ch, dir, run, log);
 }
 
+// The null P-values of the config's replica count against the uniform distribution: the i-th smallest of n
+// against (i − ½)/n, with the simultaneous 95 % band of the Dvoretzky–Kiefer–Wolfowitz inequality (Massart's
+// constant: P(sup |F_n − F| > ε) ≤ 2 exp(−2nε²), so ε = √(ln(2/0.05) / (2n))) around the uniform quantile, drawn on
+// −log10 axes where small P-values, the ones that make "differs", are spread out.
+const NullRow* config_row(const Calibration& c) {
+  for (const auto& n : c.nulls)
+    if (n.replicas == c.config_replicas) return &n;
+  return nullptr;
+}
+
+std::string null_qq_csv(const Calibration& c) {
+  std::ostringstream o;
+  o << "rank,expected,observed,band_low,band_high\n";
+  const NullRow* row = config_row(c);
+  if (!row || row->p_values.empty()) return o.str();
+  std::vector<double> p = row->p_values;
+  std::sort(p.begin(), p.end());
+  const double n = double(p.size()), eps = std::sqrt(std::log(2 / 0.05) / (2 * n));
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double e = (double(i) + 0.5) / n;
+    o << i + 1 << ',' << detail::num(e) << ',' << detail::num(p[i]) << ',' << detail::num(std::max(0.0, e - eps))
+      << ',' << detail::num(std::min(1.0, e + eps)) << '\n';
+  }
+  return o.str();
+}
+
+void null_qq_chart(const Calibration& c, const fs::path& dir, bool run, std::ostream* log) {
+  const NullRow* row = config_row(c);
+  if (!row || row->p_values.empty()) return;
+  std::vector<double> p = row->p_values;
+  std::sort(p.begin(), p.end());
+  const double n = double(p.size()), eps = std::sqrt(std::log(2 / 0.05) / (2 * n));
+  const auto lg = [](double x) { return -std::log10(std::max(x, 1e-300)); };
+  detail::Chart ch;
+  ch.name = "null_p_qq";
+  ch.title = "Null P-values against uniform (" + c.config_name + ", " + std::to_string(c.config_replicas) +
+             " replicas, " + std::to_string(p.size()) + " tests), 95 % simultaneous band";
+  ch.xlabel = "expected -log10 p";
+  ch.ylabel = "observed -log10 p";
+  detail::Line obs{"null tests", "using 1:2 with points pt 7 ps 0.4", {}, {}};
+  detail::Line lo{"band", "using 1:2 with lines dt 2 lc rgb 'gray40'", {}, {}};
+  detail::Line hi{"", "using 1:2 with lines dt 2 lc rgb 'gray40'", {}, {}};
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double e = (double(i) + 0.5) / n;
+    obs.rows.push_back({lg(e), lg(p[i])});
+    if (e + eps < 1) lo.rows.push_back({lg(e), lg(e + eps)});
+    if (e - eps > 0) hi.rows.push_back({lg(e), lg(e - eps)});
+  }
+  const double top = lg(0.5 / n);
+  ch.lines = {obs, lo, hi, {"uniform", "using 1:2 with lines lc rgb 'red'", {{0, 0}, {top, top}}, {}}};
+  detail::render(ch, dir, run, log);
+}
+
 std::vector<fs::path> calibration_files(const fs::path& dir) {
   std::vector<fs::path> out;
   std::error_code ec;
@@ -215,12 +283,14 @@ void write_calibration(const Calibration& c, const fs::path& dir, bool charts, s
   write_text_file(dir / "calibration.json", to_json(c).dump(2) + "\n");
   write_text_file(dir / "false_alarms.csv", false_alarms_csv(c));
   write_text_file(dir / "power.csv", power_csv(c));
+  write_text_file(dir / "null_p_qq.csv", null_qq_csv(c));
   write_text_file(dir / "summary.md", summary_markdown(c));
   if (!charts) return;
   const bool run = detail::has_gnuplot();
   if (!run && log) *log << "[calibrate] gnuplot not found: chart scripts written, not rendered\n";
   power_chart(c, dir / "charts", run, log);
   false_alarm_chart(c, dir / "charts", run, log);
+  null_qq_chart(c, dir / "charts", run, log);
 }
 
 namespace {

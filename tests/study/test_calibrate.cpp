@@ -157,8 +157,33 @@ TEST(Calibrate, ReportReadsAMatchingCalibrationOnly) {
   Store store(tmp.path / "pool");
   const Calibration c = calibrate(cfg, plan, store, [&](const Cell& x, const StudyConfig& s, int t) { return fake(x, s, t); }, 1, nullptr);
   write_calibration(c, tmp.path, false, nullptr);
-  for (const char* f : {"summary.md", "calibration.json", "power.csv", "false_alarms.csv"})
+  for (const char* f : {"summary.md", "calibration.json", "power.csv", "false_alarms.csv", "null_p_qq.csv"})
     EXPECT_TRUE(fs::exists(tmp.path / f)) << f;
+  // The QQ table: every raw null P-value of the config's replica count, sorted, against (i − ½)/n, inside the
+  // Dvoretzky–Kiefer–Wolfowitz band ε = √(ln 40 / 2n) around the uniform quantile.
+  {
+    const auto& row = c.nulls[0];
+    ASSERT_EQ(row.replicas, 3);
+    ASSERT_FALSE(row.p_values.empty());
+    std::ifstream in(tmp.path / "null_p_qq.csv");
+    std::string line;
+    std::getline(in, line);
+    EXPECT_EQ(line, "rank,expected,observed,band_low,band_high");
+    const double n = double(row.p_values.size()), eps = std::sqrt(std::log(40.0) / (2 * n));
+    std::size_t rows = 0;
+    double last = 0;
+    while (std::getline(in, line)) {
+      double rank, e, o, lo, hi;
+      ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf,%lf", &rank, &e, &o, &lo, &hi), 5) << line;
+      EXPECT_NEAR(e, (rank - 0.5) / n, 1e-6);
+      EXPECT_NEAR(hi - e, std::min(eps, 1 - e), 1e-6);
+      EXPECT_GE(o, last);
+      EXPECT_TRUE(o >= 0 && o <= 1) << o;
+      last = o;
+      ++rows;
+    }
+    EXPECT_EQ(rows, row.p_values.size());
+  }
 
   const std::string s = detection_limit_sentence(cfg, tmp.path);
   EXPECT_NE(s.find("with 3 replicas of 20 steps"), std::string::npos) << s;

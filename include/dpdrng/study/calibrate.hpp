@@ -53,6 +53,9 @@ struct NullRow {
   int replicas = 0;
   Rate verdicts;  // good-generator verdicts that say "differs"
   Rate studies;   // studies with any "differs" (the reference's own tests included)
+  // The raw (uncorrected) two-sided P-value of every test of every good-generator variant in these null studies,
+  // for the QQ plot against the uniform distribution they follow under the null.
+  std::vector<double> p_values;
 };
 
 struct PowerRow {
