@@ -8,10 +8,7 @@ set key outside right top noenhanced
 set datafile missing "nan"
 set logscale x
 set yrange [0:1.05]
-set xrange [0.008:0.0375]
+set xrange [0.004:0.0125]
 plot "data/power_0.dat" using 1:2:3:4 with yerrorlines lw 2 title "3 replicas", \
-     "data/power_1.dat" using 1:2:3:4 with yerrorlines lw 2 title "4 replicas", \
-     "data/power_2.dat" using 1:2:3:4 with yerrorlines lw 2 title "8 replicas", \
-     "data/power_3.dat" using 1:2:3:4 with yerrorlines lw 2 title "16 replicas", \
-     "data/power_4.dat" using 1:2 with lines dt 2 lc rgb 'gray40' title "50 %", \
-     "data/power_5.dat" using 1:2 with lines dt 2 lc rgb 'gray40' title "90 %"
+     "data/power_1.dat" using 1:2 with lines dt 2 lc rgb 'gray40' title "50 %", \
+     "data/power_2.dat" using 1:2 with lines dt 2 lc rgb 'gray40' title "90 %"
