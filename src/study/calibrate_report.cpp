@@ -326,7 +326,7 @@ std::string limit_clause(const nlohmann::json& j, int replicas) {
     if (t.kind == "variance" && t.replicas == replicas && t.power == 0.9) t90 = &t;
   std::vector<NullRow> nulls;
   for (const auto& n : j.at("false_alarms"))
-    nulls.push_back({n.at("replicas").get<int>(), rate_from(n.at("verdicts")), rate_from(n.at("studies"))});
+    nulls.push_back({n.at("replicas").get<int>(), rate_from(n.at("verdicts")), rate_from(n.at("studies")), {}});
   const NullRow* null = nullptr;
   for (const auto& n : nulls)
     if (n.replicas == replicas) null = &n;

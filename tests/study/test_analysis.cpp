@@ -229,9 +229,11 @@ TEST(StudyAnalysis, TheErrorModelPoolsTheReferencesUnderEveryNoise) {
     if (!c.cell.reference && c.cell.feed == rng::Feed::blocks)
       c.scalars["temperature_mean"] = 1.03 + 30 * (c.scalars["temperature_mean"] - 1.03);
   const Analysis wide = analyse(cfg, cells);
-  for (const auto& v : wide.variants)
-    if (!v.key.reference && v.key.feed == rng::Feed::blocks)
+  for (const auto& v : wide.variants) {
+    if (!v.key.reference && v.key.feed == rng::Feed::blocks) {
       EXPECT_EQ(comparison(v, "temperature_mean").dof, 9.0);  // 4 + 7 − 2
+    }
+  }
 }
 
 TEST(StudyAnalysis, PassFractionsPoolReplicasAndKeepTea64OutputsApart) {

@@ -291,7 +291,9 @@ TEST(BilayerStudyAnalysis, CellsWithoutComponentsSayNotMeasured) {
       EXPECT_FALSE(c->decision.tested());
       EXPECT_EQ(c->note, "not measured");
     }
-    if (v.key.rounds == 1) EXPECT_TRUE(find_comparison(v, "temperature")->decision.differs);
+    if (v.key.rounds == 1) {
+      EXPECT_TRUE(find_comparison(v, "temperature")->decision.differs);
+    }
   }
   const std::string table = bilayer_differences_markdown(a, "gauss");
   EXPECT_NE(table.find("| tea32(1) distance | P_xx − P_yy | – | – | – | – | – | not measured |"), std::string::npos)
