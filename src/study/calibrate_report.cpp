@@ -41,6 +41,20 @@ std::string rate_text(const Rate& r) {
          pct(r.high) + "]";
 }
 
+// The config's replica row's null P-values, sorted, and the half-width ε = √(ln(2/0.05) / (2n)) of the
+// simultaneous 95 % band of the Dvoretzky–Kiefer–Wolfowitz inequality (Massart's constant) around the uniform
+// quantiles (i − ½)/n.
+struct NullQuantiles {
+  std::vector<double> p;
+  double eps = NAN;
+};
+NullQuantiles null_quantiles(const NullRow& row) {
+  NullQuantiles q{row.p_values, NAN};
+  std::sort(q.p.begin(), q.p.end());
+  if (!q.p.empty()) q.eps = std::sqrt(std::log(2 / 0.05) / (2 * double(q.p.size())));
+  return q;
+}
+
 const char* kind_what(const std::string& kind) {
   if (kind == "variance") return "ε (⟨ζ²⟩ = 1 + ε)";
   if (kind == "lag1") return "ρ (lag-1 correlation)";
@@ -88,9 +102,8 @@ std::string summary_markdown(const Calibration& c) {
      << "tests are in the family too).\n\n";
   for (const auto& n : c.nulls) {
     if (n.replicas != c.config_replicas || n.p_values.empty()) continue;
-    std::vector<double> p = n.p_values;
-    std::sort(p.begin(), p.end());
-    const double m = double(p.size()), eps = std::sqrt(std::log(2 / 0.05) / (2 * m));
+    const auto [p, eps] = null_quantiles(n);
+    const double m = double(p.size());
     std::size_t above = 0, below = 0;  // larger P than uniform (conservative), smaller (liberal)
     for (std::size_t i = 0; i < p.size(); ++i) {
       const double e = (double(i) + 0.5) / m;
@@ -196,9 +209,7 @@ void false_alarm_chart(const Calibration& c, const fs::path& dir, bool run, std:
   detail::render(ch, dir, run, log);
 }
 
-// The null P-values of the config's replica count against the uniform distribution: the i-th smallest of n
-// against (i − ½)/n, with the simultaneous 95 % band of the Dvoretzky–Kiefer–Wolfowitz inequality (Massart's
-// constant: P(sup |F_n − F| > ε) ≤ 2 exp(−2nε²), so ε = √(ln(2/0.05) / (2n))) around the uniform quantile, drawn on
+// The null P-values of the config's replica count against the uniform distribution (null_quantiles), drawn on
 // −log10 axes where small P-values, the ones that make "differs", are spread out.
 const NullRow* config_row(const Calibration& c) {
   for (const auto& n : c.nulls)
@@ -211,9 +222,8 @@ std::string null_qq_csv(const Calibration& c) {
   o << "rank,expected,observed,band_low,band_high\n";
   const NullRow* row = config_row(c);
   if (!row || row->p_values.empty()) return o.str();
-  std::vector<double> p = row->p_values;
-  std::sort(p.begin(), p.end());
-  const double n = double(p.size()), eps = std::sqrt(std::log(2 / 0.05) / (2 * n));
+  const auto [p, eps] = null_quantiles(*row);
+  const double n = double(p.size());
   for (std::size_t i = 0; i < p.size(); ++i) {
     const double e = (double(i) + 0.5) / n;
     o << i + 1 << ',' << detail::num(e) << ',' << detail::num(p[i]) << ',' << detail::num(std::max(0.0, e - eps))
@@ -225,9 +235,8 @@ std::string null_qq_csv(const Calibration& c) {
 void null_qq_chart(const Calibration& c, const fs::path& dir, bool run, std::ostream* log) {
   const NullRow* row = config_row(c);
   if (!row || row->p_values.empty()) return;
-  std::vector<double> p = row->p_values;
-  std::sort(p.begin(), p.end());
-  const double n = double(p.size()), eps = std::sqrt(std::log(2 / 0.05) / (2 * n));
+  const auto [p, eps] = null_quantiles(*row);
+  const double n = double(p.size());
   const auto lg = [](double x) { return -std::log10(std::max(x, 1e-300)); };
   detail::Chart ch;
   ch.name = "null_p_qq";
