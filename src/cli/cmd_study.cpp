@@ -79,7 +79,8 @@ void merge(const std::vector<std::string>& dirs, const std::string& out_dir) {
 struct CalibrateArgs {
   std::string config, out, replicas, variance = "0.0025,0.005,0.01,0.02", lag1, mean, aniso, shard = "1/1";
   int null_studies = 100, power_studies = 10, threads = 1;
-  bool json = false, no_charts = false;
+  bool json = false, no_charts = false, at_size = false;
+  bool variance_given = false;  // --at-size runs no defects unless --variance is named (then refused)
 };
 
 // "a,b,c" within `range` (the defect's own, so that the flag, not the generator built from it, is blamed); a
@@ -119,12 +120,15 @@ void calibrate_cmd(const CalibrateArgs& a) {
     if (std::find(plan.replicas.begin(), plan.replicas.begin() + i, plan.replicas[i]) != plan.replicas.begin() + i)
       throw InputError("--replicas: lists " + std::to_string(plan.replicas[i]) + " twice");
   // The ranges of defect:variance=E,lag1=R,mean=M (rng/defect.hpp).
-  plan.variance = real_list(a.variance, "--variance", {-1.0, 1e6, true, false});
+  plan.at_size = a.at_size;
+  if (!a.at_size || a.variance_given) plan.variance = real_list(a.variance, "--variance", {-1.0, 1e6, true, false});
+  else plan.variance.clear();
   plan.lag1 = real_list(a.lag1, "--lag1", {-0.5, 0.5, false, false});
   plan.mean = real_list(a.mean, "--mean", {-1e6, 1e6, false, false});
   plan.aniso = real_list(a.aniso, "--aniso", {-0.5, 1.0, true, true});
   plan.shard = parse_shard(a.shard);
-  const StudyConfig pool = calibration_pool(config, plan);  // every input checked before anything is written
+  // Every input checked before anything is written.
+  const StudyConfig pool = plan.at_size ? at_size_pool(config, plan) : calibration_pool(config, plan);
   validate_scene(pool);
   const fs::path out(a.out);
   prepare_output_directory(out, "--out");
@@ -134,7 +138,9 @@ void calibrate_cmd(const CalibrateArgs& a) {
     std::cerr << "[calibrate] shard " << plan.shard.index << "/" << plan.shard.count << " done; " << c.missing
               << " cells of other shards not stored yet: run the other shards (or calibrate without --shard) "
                  "into the same --out to finish\n";
-    return;
+    if (c.nulls.empty()) return;
+    std::cerr << "[calibrate] summary of the " << c.nulls.front().studies.trials << " of " << c.null_studies_planned
+              << " null studies recorded so far\n";
   }
   c.machine = machine_name() + ", " + std::to_string(std::thread::hardware_concurrency()) + " cores";
   write_calibration(c, out, !a.no_charts, &std::cerr);
@@ -210,7 +216,8 @@ const bool registered = register_command(60, [](CLI::App& root) {
   add_integer(*k, "--power-studies", ca->power_studies,
               "power studies per defect size at the largest replica count (more at smaller counts)", {1, 100000});
   k->add_option("--replicas", ca->replicas, "replica counts to calibrate, e.g. 4,8,16 (the config's is always added)");
-  k->add_option("--variance", ca->variance, "variance defects ε, comma-separated ('' for none)")->capture_default_str();
+  CLI::Option* variance =
+      k->add_option("--variance", ca->variance, "variance defects ε, comma-separated ('' for none)")->capture_default_str();
   k->add_option("--lag1", ca->lag1, "lag-1 correlation defects ρ (run in pair-step seeding)");
   k->add_option("--mean", ca->mean, "mean-shift defects μ");
   k->add_option("--aniso", ca->aniso, "anisotropic defects κ: ζ's variance × (1 + κ(3cos²θ − 1)), θ the pair's angle to z");
@@ -219,9 +226,16 @@ const bool registered = register_command(60, [](CLI::App& root) {
                 "compute only shard k of N of the pool's cells (round-robin), e.g. 1/2: shards share --out, and "
                 "the one that finds every cell stored writes the summary")
       ->capture_default_str();
+  k->add_flag("--at-size", ca->at_size,
+              "null studies at the config's own size: every variant slot (generator x rounds) gets its own good "
+              "generator, defect:key=k, so each null study has the config's variants, tests and Holm family; "
+              "also reports how often those are shown equivalent per replica count (no defects)");
   k->add_flag("--json", ca->json, "print calibration.json on standard output");
   k->add_flag("--no-charts", ca->no_charts, "skip gnuplot");
-  k->callback([ca] { calibrate_cmd(*ca); });
+  k->callback([ca, variance] {
+    ca->variance_given = variance->count() > 0;
+    calibrate_cmd(*ca);
+  });
 
   auto cfg = std::make_shared<std::string>();
   auto shard = std::make_shared<std::string>("1/1");

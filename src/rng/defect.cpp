@@ -10,8 +10,9 @@ namespace dpdrng::rng {
 bool is_defect(std::string_view name) { return name == "defect" || name.starts_with(kDefectPrefix); }
 
 std::string defect_syntax() {
-  return "defect:variance=E,lag1=R,mean=M,aniso=K,base=philox4x32 (each optional; E > -1, |R| <= 1/2, M finite, "
-         "-1/2 < K < 1; aniso needs distance seeding)";
+  return "defect:variance=E,lag1=R,mean=M,aniso=K,key=N,base=philox4x32 (each optional; E > -1, |R| <= 1/2, M "
+         "finite, -1/2 < K < 1, N an integer in [0, 2^32) replacing the base key's second word; aniso needs distance "
+         "seeding)";
 }
 
 namespace {
@@ -33,7 +34,7 @@ DefectParams parse_defect(std::string_view name) {
   if (name == "defect") return p;
   std::string_view rest = name.substr(kDefectPrefix.size());
   if (rest.empty()) fail(name, "no parameters after 'defect:'");
-  bool seen[5] = {false, false, false, false, false};
+  bool seen[6] = {false, false, false, false, false, false};
   for (;;) {
     const std::size_t comma = rest.find(',');
     const std::string_view item = rest.substr(0, comma);
@@ -50,6 +51,8 @@ DefectParams parse_defect(std::string_view name) {
       k = 2, p.mean = parse_real(value, what, {-1e6, 1e6, false, false});
     } else if (key == "aniso") {
       k = 4, p.aniso = parse_real(value, what, {-0.5, 1.0, true, true});
+    } else if (key == "key") {
+      k = 5, p.key = parse_number<std::uint32_t>(value, what);
     } else if (key == "base") {
       k = 3;
       if (value != "philox4x32" && value != "philox4x32(10)")

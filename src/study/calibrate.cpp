@@ -15,9 +15,47 @@
 #include "dpdrng/rng/registry.hpp"
 #include "dpdrng/stats/binomial.hpp"
 #include "dpdrng/study/analysis.hpp"
+#include "calibrate_common.hpp"
 
 namespace dpdrng::study {
+namespace calibration_detail {
+
+std::vector<int> replica_counts(const StudyConfig& config, const CalibrationPlan& plan) {
+  std::set<int> r(plan.replicas.begin(), plan.replicas.end());
+  r.insert(config.replicas);
+  return {r.begin(), r.end()};
+}
+
+Analysis analyse_block(const StudyConfig& study, const std::vector<const CellResult*>& cells) {
+  std::vector<CellResult> copy;
+  copy.reserve(cells.size());
+  for (const auto* c : cells) copy.push_back(*c);
+  return analyse(study, copy);
+}
+
+bool says_differs(const VariantReport& v, double alpha) { return v.cells.size() > 0 && v.min_p < alpha; }
+
+// The raw P-value of every test of a variant that has one (observables, pass fractions, ζ correlations, ⟨ζ²⟩ = 1).
+void append_p_values(const VariantReport& v, std::vector<double>& out) {
+  for (const auto& o : v.observables)
+    if (o.decision.tested()) out.push_back(o.decision.p);
+  for (const auto& p : v.passes)
+    if (p.decision.tested()) out.push_back(p.decision.p);
+  for (const auto& c : v.correlations)
+    if (c.decision.tested()) out.push_back(c.decision.p);
+  if (v.zeta_decision.tested()) out.push_back(v.zeta_decision.p);
+}
+
+std::string duration(double s) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%dm%02ds", int(s) / 60, int(s) % 60);
+  return buf;
+}
+
+}  // namespace calibration_detail
+
 namespace {
+using namespace calibration_detail;
 
 // Generators the study calls good: 10 and 20 rounds are Random123's defaults, with margin over the rounds that
 // pass BigCrush (Salmon et al. SC'11); SplitMix64 passes BigCrush (Steele et al. 2014).
@@ -43,11 +81,6 @@ bool is_good(const std::string& g) {
   return std::any_of(kGood.begin(), kGood.end(), [&](const GeneratorEntry& e) { return e.name == g; });
 }
 
-std::vector<int> replica_counts(const StudyConfig& config, const CalibrationPlan& plan) {
-  std::set<int> r(plan.replicas.begin(), plan.replicas.end());
-  r.insert(config.replicas);
-  return {r.begin(), r.end()};
-}
 
 // The cells of pool replicas [first, first + count) with these generators.
 std::vector<const CellResult*> block(const std::vector<CellResult>& cells, int first, int count,
@@ -68,25 +101,8 @@ StudyConfig sub_study(const StudyConfig& pool, int replicas, const std::vector<G
   return s;
 }
 
-Analysis analyse_block(const StudyConfig& study, const std::vector<const CellResult*>& cells) {
-  std::vector<CellResult> copy;
-  copy.reserve(cells.size());
-  for (const auto* c : cells) copy.push_back(*c);
-  return analyse(study, copy);
-}
 
-bool says_differs(const VariantReport& v, double alpha) { return v.cells.size() > 0 && v.min_p < alpha; }
 
-// The raw P-value of every test of a variant that has one (observables, pass fractions, ζ correlations, ⟨ζ²⟩ = 1).
-void append_p_values(const VariantReport& v, std::vector<double>& out) {
-  for (const auto& o : v.observables)
-    if (o.decision.tested()) out.push_back(o.decision.p);
-  for (const auto& p : v.passes)
-    if (p.decision.tested()) out.push_back(p.decision.p);
-  for (const auto& c : v.correlations)
-    if (c.decision.tested()) out.push_back(c.decision.p);
-  if (v.zeta_decision.tested()) out.push_back(v.zeta_decision.p);
-}
 
 NullRow null_row(const StudyConfig& pool, const std::vector<CellResult>& cells, int replicas, int studies) {
   const StudyConfig study = sub_study(pool, replicas, kGood);
@@ -107,7 +123,7 @@ NullRow null_row(const StudyConfig& pool, const std::vector<CellResult>& cells, 
     }
     alarmed_studies += any;
   }
-  return {replicas, make_rate(alarms, verdicts), make_rate(alarmed_studies, std::size_t(studies)), p_values};
+  return {replicas, make_rate(alarms, verdicts), make_rate(alarmed_studies, std::size_t(studies)), p_values, 0};
 }
 
 double temperature_error(const std::vector<CellResult>& cells, const std::string& generator) {
@@ -171,11 +187,6 @@ std::vector<Threshold> thresholds(const std::vector<PowerRow>& rows) {
   return out;
 }
 
-std::string duration(double s) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%dm%02ds", int(s) / 60, int(s) % 60);
-  return buf;
-}
 
 }  // namespace
 
@@ -236,31 +247,11 @@ StudyConfig calibration_pool(const StudyConfig& config, const CalibrationPlan& p
   return p;
 }
 
-Calibration calibrate(const StudyConfig& config, const CalibrationPlan& plan, Store& store, const MeasureFn& measure,
-                      int threads, std::ostream* progress) {
+namespace calibration_detail {
+
+void compute_cells(const std::vector<Cell>& todo, const StudyConfig& pool, const MeasureFn& measure, int threads,
+                   Store& store, std::ostream* progress, const std::function<void(const Cell&)>& saved) {
   using clock = std::chrono::steady_clock;
-  const auto t0 = clock::now();
-  const StudyConfig pool = calibration_pool(config, plan);
-  const int q = defect_replicas(config, plan);
-  store.open_for(pool);
-  std::vector<Cell> todo, all;
-  for (const auto& c : enumerate_cells(pool))
-    if (c.reference || is_good(c.generator) || c.replica < q) all.push_back(c);
-  Calibration out;
-  for (const auto& c : select_shard(all, plan.shard)) {
-    if (store.has(c)) {
-      ++out.resumed;
-    } else {
-      todo.push_back(c);
-      ++out.computed;
-    }
-  }
-  out.cells = all.size();
-  if (progress)
-    *progress << "[calibrate] " << config.name << ": " << all.size() << " cells (" << pool.replicas
-              << " pool replicas, defects on the first " << q << "), shard " << plan.shard.index << "/"
-              << plan.shard.count << ": " << out.resumed << " stored, " << todo.size() << " to compute, into "
-              << store.dir().string() << "\n";
   double busy = 0;
   for (std::size_t k = 0; k < todo.size(); ++k) {
     const auto c0 = clock::now();
@@ -283,19 +274,20 @@ Calibration calibrate(const StudyConfig& config, const CalibrationPlan& plan, St
                     duration(busy / double(k + 1) * double(todo.size() - k - 1)).c_str());
       *progress << line << std::flush;
     }
+    if (saved) saved(todo[k]);
   }
+}
 
-  for (const auto& c : all) out.missing += !store.has(c);
-  if (out.missing > 0) return out;
+std::vector<CellResult> load_cells(const Store& store) {
   std::vector<UnreadableCell> unreadable;
-  const std::vector<CellResult> cells = store.load_all(&unreadable);
+  std::vector<CellResult> cells = store.load_all(&unreadable);
   if (!unreadable.empty())
     throw OutputError(unreadable.front().file.string() + " is unreadable (" + unreadable.front().reason +
                       "): delete it and run calibrate again");
-  for (const auto& c : cells) {
-    out.cell_seconds += c.seconds;
-    out.failed += c.status == CellStatus::failed;
-  }
+  return cells;
+}
+
+void describe(Calibration& out, const StudyConfig& config, const StudyConfig& pool) {
   out.config_name = config.name;
   out.scene = calibration_key(config);
   out.alpha = config.tests.alpha;
@@ -304,19 +296,61 @@ Calibration calibrate(const StudyConfig& config, const CalibrationPlan& plan, St
   out.production = config.scene.steps - config.scene.equilibrate;
   out.config_replicas = config.replicas;
   out.pool_replicas = pool.replicas;
+}
+
+void add_wall_time(Calibration& out, const Store& store, double seconds) {
+  out.seconds = seconds;
+  const std::filesystem::path wall = store.dir() / "wall_seconds";
+  double before = 0;
+  if (std::ifstream in(wall); in) in >> before;
+  out.wall_total = before + out.seconds;
+  write_file_atomically(wall, std::to_string(out.wall_total) + "\n");
+}
+
+}  // namespace calibration_detail
+
+Calibration calibrate(const StudyConfig& config, const CalibrationPlan& plan, Store& store, const MeasureFn& measure,
+                      int threads, std::ostream* progress) {
+  if (plan.at_size) return calibrate_at_size(config, plan, store, measure, threads, progress);
+  const auto t0 = std::chrono::steady_clock::now();
+  const StudyConfig pool = calibration_pool(config, plan);
+  const int q = defect_replicas(config, plan);
+  store.open_for(pool);
+  std::vector<Cell> todo, all;
+  for (const auto& c : enumerate_cells(pool))
+    if (c.reference || is_good(c.generator) || c.replica < q) all.push_back(c);
+  Calibration out;
+  for (const auto& c : select_shard(all, plan.shard)) {
+    if (store.has(c)) {
+      ++out.resumed;
+    } else {
+      todo.push_back(c);
+      ++out.computed;
+    }
+  }
+  out.cells = all.size();
+  if (progress)
+    *progress << "[calibrate] " << config.name << ": " << all.size() << " cells (" << pool.replicas
+              << " pool replicas, defects on the first " << q << "), shard " << plan.shard.index << "/"
+              << plan.shard.count << ": " << out.resumed << " stored, " << todo.size() << " to compute, into "
+              << store.dir().string() << "\n";
+  compute_cells(todo, pool, measure, threads, store, progress, nullptr);
+
+  for (const auto& c : all) out.missing += !store.has(c);
+  if (out.missing > 0) return out;
+  const std::vector<CellResult> cells = load_cells(store);
+  for (const auto& c : cells) {
+    out.cell_seconds += c.seconds;
+    out.failed += c.status == CellStatus::failed;
+  }
+  describe(out, config, pool);
   out.defect_replicas = q;
   for (int r : replica_counts(config, plan)) out.nulls.push_back(null_row(pool, cells, r, pool.replicas / r));
   for (const auto& d : defects_of(plan))
     for (int r : replica_counts(config, plan))
       if (q / r > 0) out.power.push_back(power_row(pool, cells, d, r, q / r));
   out.thresholds = thresholds(out.power);
-  out.seconds = std::chrono::duration<double>(clock::now() - t0).count();
-  // Wall time summed over every invocation on this pool (a resumed run's share included).
-  const std::filesystem::path wall = store.dir() / "wall_seconds";
-  double before = 0;
-  if (std::ifstream in(wall); in) in >> before;
-  out.wall_total = before + out.seconds;
-  write_file_atomically(wall, std::to_string(out.wall_total) + "\n");
+  add_wall_time(out, store, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   return out;
 }
 

@@ -77,24 +77,7 @@ double temperature_per_epsilon(const std::vector<PowerRow>& rows) {
   return n ? s / double(n) : NAN;
 }
 
-std::string summary_markdown(const Calibration& c) {
-  std::ostringstream md;
-  md << "# Calibration of the study verdicts: " << c.config_name << "\n\n"
-     << "How often the study's verdicts call a good generator \"differs\" (false alarms), and how large an injected "
-        "defect must be before they do (power), for this config's scene and tests: "
-     << c.steps << " steps (" << c.production << " production), α = " << c.alpha << ", error control over the "
-     << c.error_control << ". Made by `dpdrng study calibrate`.\n\n"
-     << "- **Null studies**: the reference (MT19937) and three generators known to be good (philox4x32(10), "
-        "threefry2x64(20), splitmix64), analysed exactly as `study report` analyses a study. Each good generator's "
-        "verdict is a null verdict; a \"differs\" is a false alarm.\n"
-     << "- **Power studies**: the same cells plus one defect generator (`defect:variance=ε` etc.: Philox4x32-10 "
-        "with ζ scaled by √(1+ε), see `dpdrng list`), a study of four variants; detected when the defect's verdict "
-        "says \"differs\".\n"
-     << "- One pool of " << c.pool_replicas << " replicas (the config's seeding of replica r); defect cells on the "
-     << "first " << c.defect_replicas << ". A study of R replicas is a block of R consecutive pool replicas, so the "
-     << "studies of one replica count are disjoint and independent; null and power studies of a block share its "
-        "reference and good-generator cells.\n"
-     << "- Intervals: central 95 % Clopper–Pearson.\n\n";
+void false_alarm_section(const Calibration& c, std::ostream& md) {
   md << "## False alarms\n\n| replicas | null verdicts \"differs\" | studies with any \"differs\" |\n|---|---|---|\n";
   for (const auto& n : c.nulls)
     md << "| " << n.replicas << " | " << rate_text(n.verdicts) << " | " << rate_text(n.studies) << " |\n";
@@ -121,6 +104,83 @@ std::string summary_markdown(const Calibration& c) {
           "guide, not a test. Smallest: "
        << detail::p_text(p.front()) << ".\n\n";
   }
+}
+
+void cost_section(const Calibration& c, std::ostream& md) {
+  md << "## Cost\n\n" << c.cells << " cells (" << c.computed << " computed by the last invocation, " << c.resumed
+     << " resumed, " << c.failed << " failed); wall time " << detail::fmt("%.0f", c.wall_total)
+     << " s over every invocation on this pool (the last " << detail::fmt("%.0f", c.seconds)
+     << " s); compute time of all cells " << detail::fmt("%.0f", c.cell_seconds)
+     << " s (the cells' own wall times, each process computing one cell at a time; on a shared machine they carry "
+        "its load); "
+     << "machine: " << c.machine << ".\n";
+}
+
+
+// The at-size calibration: null studies with the config's variants, and how often they come out equivalent.
+std::string at_size_markdown(const Calibration& c) {
+  std::ostringstream md;
+  md << "# Calibration of the study verdicts at the study's own size: " << c.config_name << "\n\n"
+     << "How often the verdicts of a study with this config's variants, tests and Holm family call a good "
+        "generator \"differs\" (false alarms), and how often they show it equivalent within the config's margins: "
+     << c.steps << " steps (" << c.production << " production), α = " << c.alpha << ", error control over the "
+     << c.error_control << ". Made by `dpdrng study calibrate --at-size`.\n\n"
+     << "- **Null studies**: every variant slot of the config (generator × rounds, under every noise) holds its own "
+        "good generator, `defect:key=k` (Philox4x32-10 under key (3, k, 5, 6), no defect), against the reference "
+        "(MT19937), analysed exactly as `study report` analyses the study. Every variant verdict is a null verdict; "
+        "a \"differs\" is a false alarm.\n"
+     << "- One pool of " << c.pool_replicas << " variant replicas; null study s of R replicas compares replicas "
+        "[sR, sR + R) with the same reference replicas (the same initial states) plus R_ref − R extra reference "
+        "replicas of its own (R_ref = "
+     << c.reference_replicas << ", the config's), so the studies of one replica count are disjoint and independent.\n"
+     << "- Intervals: central 95 % Clopper–Pearson.\n"
+     << "- Each null study is analysed once its cells are stored and kept in `pool/null-studies/` (its verdicts, "
+        "P-values and equivalence outcomes), so the calibration can be carried over several sittings in those "
+        "files alone.\n\n";
+  if (!c.nulls.empty() && int(c.nulls.front().studies.trials) < c.null_studies_planned)
+    md << "**Partial:** " << c.nulls.front().studies.trials << " of the " << c.null_studies_planned
+       << " null studies asked for are recorded; rerun the same command to add the others.\n\n";
+  for (const auto& n : c.nulls)
+    md << "- At " << n.replicas << " replicas a null study's Holm family holds " << n.tests_per_study
+       << " tests. The config's own study holds a few more where its generators give more streams (a 64-bit "
+          "word's two halves each get χ² and lag-1 t tests) or where it runs the NIST battery; a smaller family "
+          "loosens Holm's thresholds, so the false-alarm rate here errs high, if at all.\n";
+  md << "\n";
+  false_alarm_section(c, md);
+  if (!c.equivalence.empty()) {
+    md << "## Equivalence of good generators\n\nThe fraction of null variant verdicts (slot × noise) whose "
+          "equivalence test passes (Holm over the study's equivalence tests): the replicas a good generator needs "
+          "to be shown equivalent at the config's margins.\n\n"
+       << "| replicas | reference replicas | observable | margin | shown equivalent [95 % CI] |\n|---|---|---|---|---|\n";
+    for (const auto& e : c.equivalence)
+      md << "| " << e.replicas << " | " << e.reference_replicas << " | " << e.observable << " | "
+         << detail::num(e.margin) << " | " << rate_text(e.equivalent) << " |\n";
+    md << "\n";
+  }
+  cost_section(c, md);
+  return md.str();
+}
+
+std::string summary_markdown(const Calibration& c) {
+  if (c.at_size) return at_size_markdown(c);
+  std::ostringstream md;
+  md << "# Calibration of the study verdicts: " << c.config_name << "\n\n"
+     << "How often the study's verdicts call a good generator \"differs\" (false alarms), and how large an injected "
+        "defect must be before they do (power), for this config's scene and tests: "
+     << c.steps << " steps (" << c.production << " production), α = " << c.alpha << ", error control over the "
+     << c.error_control << ". Made by `dpdrng study calibrate`.\n\n"
+     << "- **Null studies**: the reference (MT19937) and three generators known to be good (philox4x32(10), "
+        "threefry2x64(20), splitmix64), analysed exactly as `study report` analyses a study. Each good generator's "
+        "verdict is a null verdict; a \"differs\" is a false alarm.\n"
+     << "- **Power studies**: the same cells plus one defect generator (`defect:variance=ε` etc.: Philox4x32-10 "
+        "with ζ scaled by √(1+ε), see `dpdrng list`), a study of four variants; detected when the defect's verdict "
+        "says \"differs\".\n"
+     << "- One pool of " << c.pool_replicas << " replicas (the config's seeding of replica r); defect cells on the "
+     << "first " << c.defect_replicas << ". A study of R replicas is a block of R consecutive pool replicas, so the "
+     << "studies of one replica count are disjoint and independent; null and power studies of a block share its "
+        "reference and good-generator cells.\n"
+     << "- Intervals: central 95 % Clopper–Pearson.\n\n";
+  false_alarm_section(c, md);
   if (!c.power.empty()) {
     md << "## Power\n\n| defect | size | replicas | detected [95 % CI] | T error (measured) |\n|---|---|---|---|---|\n";
     for (const auto& p : c.power)
@@ -133,13 +193,7 @@ std::string summary_markdown(const Calibration& c) {
          << threshold_text(c.thresholds[k]) << " | " << threshold_text(c.thresholds[k + 1]) << " |\n";
     md << "\n" << detail::chart_link("power", "power against defect size") << "\n\n" << detail::chart_link("false_alarms", "false-alarm rates") << "\n\n";
   }
-  md << "## Cost\n\n" << c.cells << " cells (" << c.computed << " computed by the last invocation, " << c.resumed
-     << " resumed, " << c.failed << " failed); wall time " << detail::fmt("%.0f", c.wall_total)
-     << " s over every invocation on this pool (the last " << detail::fmt("%.0f", c.seconds)
-     << " s); compute time of all cells " << detail::fmt("%.0f", c.cell_seconds)
-     << " s (the cells' own wall times, each process computing one cell at a time; on a shared machine they carry "
-        "its load); "
-     << "machine: " << c.machine << ".\n";
+  cost_section(c, md);
   return md.str();
 }
 
@@ -151,6 +205,16 @@ std::string false_alarms_csv(const Calibration& c) {
     o << n.replicas << ',' << n.verdicts.trials << ',' << n.verdicts.events << ',' << n.verdicts.rate << ','
       << n.verdicts.low << ',' << n.verdicts.high << ',' << n.studies.trials << ',' << n.studies.events << ','
       << n.studies.rate << ',' << n.studies.low << ',' << n.studies.high << '\n';
+  return o.str();
+}
+
+std::string equivalence_csv(const Calibration& c) {
+  std::ostringstream o;
+  o << "replicas,reference_replicas,observable,margin,verdicts,equivalent,rate,ci95_low,ci95_high\n";
+  for (const auto& e : c.equivalence)
+    o << e.replicas << ',' << e.reference_replicas << ',' << e.observable << ',' << e.margin << ','
+      << e.equivalent.trials << ',' << e.equivalent.events << ',' << e.equivalent.rate << ',' << e.equivalent.low
+      << ',' << e.equivalent.high << '\n';
   return o.str();
 }
 
@@ -274,10 +338,17 @@ std::vector<fs::path> calibration_files(const fs::path& dir) {
 nlohmann::json to_json(const Calibration& c) {
   nlohmann::json nulls = nlohmann::json::array(), power = nlohmann::json::array(), th = nlohmann::json::array();
   for (const auto& n : c.nulls)
-    nulls.push_back({{"replicas", n.replicas}, {"verdicts", rate_json(n.verdicts)}, {"studies", rate_json(n.studies)}});
+    nulls.push_back({{"replicas", n.replicas},
+                     {"verdicts", rate_json(n.verdicts)},
+                     {"studies", rate_json(n.studies)},
+                     {"tests_per_study", n.tests_per_study}});
   for (const auto& p : c.power)
     power.push_back({{"kind", p.kind}, {"size", p.size}, {"replicas", p.replicas},
                      {"detected", rate_json(p.detected)}, {"temperature_error", p.temperature_error}});
+  nlohmann::json eq = nlohmann::json::array();
+  for (const auto& e : c.equivalence)
+    eq.push_back({{"replicas", e.replicas}, {"reference_replicas", e.reference_replicas},
+                  {"observable", e.observable}, {"margin", e.margin}, {"equivalent", rate_json(e.equivalent)}});
   for (const auto& t : c.thresholds)
     th.push_back({{"kind", t.kind}, {"replicas", t.replicas}, {"power", t.power},
                   {"size", std::isfinite(t.size) ? nlohmann::json(t.size) : nlohmann::json()},
@@ -287,7 +358,9 @@ nlohmann::json to_json(const Calibration& c) {
           {"steps", c.steps},            {"production_steps", c.production},
           {"config_replicas", c.config_replicas},
           {"pool_replicas", c.pool_replicas}, {"defect_replicas", c.defect_replicas},
-          {"false_alarms", nulls},       {"power", power},
+          {"at_size", c.at_size},        {"reference_replicas", c.reference_replicas},
+          {"null_studies_planned", c.null_studies_planned},
+          {"false_alarms", nulls},       {"power", power},              {"equivalence", eq},
           {"thresholds", th},            {"cells", c.cells},
           {"computed", c.computed},      {"resumed", c.resumed},
           {"failed", c.failed},          {"wall_seconds", c.seconds}, {"wall_seconds_total", c.wall_total},
@@ -298,7 +371,10 @@ void write_calibration(const Calibration& c, const fs::path& dir, bool charts, s
   fs::create_directories(dir);
   write_text_file(dir / "calibration.json", to_json(c).dump(2) + "\n");
   write_text_file(dir / "false_alarms.csv", false_alarms_csv(c));
-  write_text_file(dir / "power.csv", power_csv(c));
+  if (c.at_size)
+    write_text_file(dir / "equivalence.csv", equivalence_csv(c));
+  else
+    write_text_file(dir / "power.csv", power_csv(c));
   write_text_file(dir / "null_p_qq.csv", null_qq_csv(c));
   write_text_file(dir / "summary.md", summary_markdown(c));
   if (!charts) return;
@@ -335,7 +411,7 @@ std::string limit_clause(const nlohmann::json& j, int replicas) {
     if (t.kind == "variance" && t.replicas == replicas && t.power == 0.9) t90 = &t;
   std::vector<NullRow> nulls;
   for (const auto& n : j.at("false_alarms"))
-    nulls.push_back({n.at("replicas").get<int>(), rate_from(n.at("verdicts")), rate_from(n.at("studies")), {}});
+    nulls.push_back({n.at("replicas").get<int>(), rate_from(n.at("verdicts")), rate_from(n.at("studies")), {}, 0});
   const NullRow* null = nullptr;
   for (const auto& n : nulls)
     if (n.replicas == replicas) null = &n;

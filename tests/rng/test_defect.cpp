@@ -78,6 +78,27 @@ TEST(Defect, RefusesMalformedNames) {
   EXPECT_NO_THROW(check_defect_seeding(validated({"defect:aniso=0.1", 0}), Seeding::distance));
 }
 
+// key=N: Philox4x32-10 (Random123's known-answer vectors are checked in test_random123) under the key
+// (3, N, 5, 6) instead of the paper's (3, 4, 5, 6), with no defect: an independent good generator per N.
+TEST(Defect, KeyParameterRekeysTheBase) {
+  EXPECT_EQ(parse_defect("defect:key=7").key, 7);
+  EXPECT_EQ(parse_defect("defect:key=4294967295").key, 4294967295LL);
+  EXPECT_EQ(parse_defect("defect:variance=0.1").key, -1);
+  for (const char* bad : {"defect:key=-1", "defect:key=4294967296", "defect:key=1.5", "defect:key=1,key=2"})
+    EXPECT_THROW(validated({bad, 0}), InputError) << bad;
+  Defect d;
+  d.p = parse_defect("defect:key=7");
+  Philox4x32<10> rekeyed, paper;
+  rekeyed.key = {3, 7, 5, 6};
+  const PairInput p{3, 17, 0.37, -0.61, 0.05, 1234};
+  EXPECT_EQ(pair_block<Seeding::pair_step>(d, p, 42).now, pair_block<Seeding::pair_step>(rekeyed, p, 42));
+  EXPECT_NE(pair_block<Seeding::pair_step>(d, p, 42).now, pair_block<Seeding::pair_step>(paper, p, 42));
+  EXPECT_EQ(d.distance(0.3, 0.2, 0.1).now, rekeyed.distance(0.3, 0.2, 0.1));
+  Defect four;
+  four.p = parse_defect("defect:key=4");  // the paper key's own second word: the plain base
+  EXPECT_EQ(four.distance(0.3, 0.2, 0.1).now, paper.distance(0.3, 0.2, 0.1));
+}
+
 // No defect: the base's numbers, bit for bit, in every seeding and in counter streams; with a defect the words
 // stay the base's (the word-level stream) while ζ changes.
 TEST(Defect, ZeroDefectIsPhilox10) {

@@ -3,14 +3,17 @@
 #include <gtest/gtest.h>
 #include <stdlib.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 
 #include "dpdrng/common/error.hpp"
+#include "dpdrng/common/output.hpp"
 #include "dpdrng/rng/defect.hpp"
 #include "dpdrng/rng/registry.hpp"
 #include "dpdrng/stats/binomial.hpp"
+#include "dpdrng/study/analysis.hpp"
 #include "dpdrng/study/calibrate.hpp"
 #include "dpdrng/study/report.hpp"
 #include "fake_measure.hpp"
@@ -245,6 +248,113 @@ TEST(Calibrate, PoolRunsTheFirstFeedOnly) {
   const StudyConfig pool = calibration_pool(cfg, small_plan());
   EXPECT_EQ(pool.feeds, std::vector<rng::Feed>{rng::Feed::blocks});
   for (const auto& c : enumerate_cells(pool)) EXPECT_EQ(c.feed, rng::Feed::blocks);
+}
+
+// At the study's own size: every variant slot of the config (generator × rounds) becomes its own keyed good
+// generator, so a null study has the config's variants and Holm family; null study s takes variant replicas
+// [sR, sR + R), the same reference replicas and R_ref − R reference replicas of its own.
+TEST(Calibrate, AtSizeNullStudiesHaveTheStudysVariants) {
+  std::string toml = fake::small_config_toml("calib-at-size", 3);
+  toml.replace(toml.find("[[sweep.generator]]"), 0, "feeds = [\"halves\", \"blocks\"]\n");
+  StudyConfig cfg = parse_config(toml, "c.toml");
+  cfg.reference_replicas = 5;
+  std::size_t slots = 0;
+  for (const auto& g : cfg.generators) slots += std::max<std::size_t>(g.rounds.size(), 1);
+  CalibrationPlan plan;
+  plan.at_size = true;
+  plan.null_studies = 6;
+  plan.variance.clear();
+  const StudyConfig pool = at_size_pool(cfg, plan);
+  ASSERT_EQ(pool.generators.size(), slots);
+  for (std::size_t k = 0; k < slots; ++k) EXPECT_EQ(pool.generators[k].name, "defect:key=" + std::to_string(k));
+  EXPECT_EQ(pool.replicas, 18);
+  EXPECT_EQ(pool.reference_replicas, 18 + 6 * 2);
+  EXPECT_TRUE(pool.tests.nist_generators.empty());
+  EXPECT_EQ(pool.feeds, cfg.feeds);  // every noise of the study, unlike the CI-size pool
+
+  // Slot 1 runs 5 % hot (60 times the fake's replica spread): every null study must see it in its own block.
+  struct SlotFake {
+    fake::FakeMeasure m;
+    int calls = 0;
+    CellResult operator()(const Cell& c, const StudyConfig& s, int t) {
+      ++calls;
+      CellResult r = m(c, s, t);
+      if (c.generator == "defect:key=1") r.scalars["temperature_mean"] *= 1.05;
+      return r;
+    }
+  } fake;
+  TempDir tmp;
+  Store store(tmp.path / "pool");
+  const Calibration c = calibrate(cfg, plan, store, [&](const Cell& x, const StudyConfig& s, int t) { return fake(x, s, t); }, 1, nullptr);
+  const std::size_t noises = 2;  // gauss under halves and blocks
+  EXPECT_EQ(std::size_t(fake.calls), slots * noises * 18 + noises * 30);
+  EXPECT_TRUE(c.at_size);
+  EXPECT_TRUE(c.power.empty());
+  ASSERT_EQ(c.nulls.size(), 1u);
+  EXPECT_EQ(c.nulls[0].replicas, 3);
+  EXPECT_EQ(c.nulls[0].studies.trials, 6u);
+  EXPECT_EQ(c.nulls[0].studies.events, 6u);
+  EXPECT_EQ(c.nulls[0].verdicts.trials, 6 * slots * noises);
+  EXPECT_GE(c.nulls[0].verdicts.events, 6 * noises);  // slot 1 under each noise, in each study
+  // A null study's Holm family is the config's own study's (same variants and tests, other generators), except
+  // for per-stream tests: the fake gives tea64 two χ² and two lag-1 t streams and a keyed Philox one, so the
+  // study holds 2 pass-fraction tests more per noise.
+  fake::FakeMeasure real;
+  std::vector<CellResult> study_cells;
+  for (const auto& cell : enumerate_cells(cfg)) study_cells.push_back(real(cell, cfg, 1));
+  EXPECT_EQ(c.nulls[0].tests_per_study + 2 * noises, analyse(cfg, study_cells).family_size);
+  bool temperature = false;
+  for (const auto& e : c.equivalence) {
+    EXPECT_EQ(e.replicas, 3);
+    EXPECT_EQ(e.reference_replicas, 5);
+    EXPECT_EQ(e.equivalent.trials, 6 * slots * noises) << e.observable;
+    temperature = temperature || e.observable == "temperature_mean";
+  }
+  EXPECT_TRUE(temperature);
+  EXPECT_EQ(c.null_studies_planned, 6);
+
+  // Each null study's outcome is kept on its own: with the cells gone, a rerun computes nothing and adds up the
+  // same numbers; a study whose record is deleted has its cells (and only those) computed again.
+  for (int s = 0; s < 6; ++s) {
+    char name[32];
+    std::snprintf(name, sizeof name, "study-%03d.json", s);
+    EXPECT_TRUE(std::filesystem::exists(store.dir() / "null-studies" / name)) << name;
+  }
+  std::filesystem::remove_all(store.dir() / "cells");
+  SlotFake again;
+  const auto rerun = [&] {
+    return calibrate(cfg, plan, store, [&](const Cell& x, const StudyConfig& s, int t) { return again(x, s, t); }, 1,
+                     nullptr);
+  };
+  const Calibration resumed = rerun();
+  EXPECT_EQ(again.calls, 0);
+  EXPECT_EQ(resumed.missing, 0u);
+  ASSERT_EQ(resumed.nulls.size(), 1u);
+  EXPECT_EQ(resumed.nulls[0].p_values, c.nulls[0].p_values);
+  EXPECT_EQ(resumed.nulls[0].verdicts.events, c.nulls[0].verdicts.events);
+  ASSERT_EQ(resumed.equivalence.size(), c.equivalence.size());
+  for (std::size_t k = 0; k < c.equivalence.size(); ++k)
+    EXPECT_EQ(resumed.equivalence[k].equivalent.events, c.equivalence[k].equivalent.events);
+  std::filesystem::remove(store.dir() / "null-studies" / "study-004.json");
+  const Calibration redone = rerun();
+  EXPECT_EQ(std::size_t(again.calls), slots * noises * 3 + noises * 5);
+  EXPECT_EQ(redone.nulls[0].p_values.size(), c.nulls[0].p_values.size());
+  EXPECT_EQ(redone.nulls[0].studies.events, 6u);
+
+  // A damaged record is an error that names it, not a silently smaller calibration.
+  write_file_atomically(store.dir() / "null-studies" / "study-002.json", "{\"study\": 2");
+  EXPECT_THROW(rerun(), OutputError);
+  std::filesystem::remove(store.dir() / "null-studies" / "study-002.json");
+
+  // Defects are calibrated at the CI scene's size; configs whose replica blocks vary by Δt are refused.
+  plan.variance = {0.01};
+  EXPECT_THROW(at_size_pool(cfg, plan), InputError);
+  plan.variance.clear();
+  plan.replicas = {6};  // null studies have the config's replica count
+  EXPECT_THROW(at_size_pool(cfg, plan), InputError);
+  plan.replicas.clear();
+  cfg.integrators = {"mvv:0.5", "shardlow"};
+  EXPECT_THROW(at_size_pool(cfg, plan), InputError);
 }
 
 }  // namespace dpdrng_test::study_test_calibrate

@@ -29,13 +29,16 @@ struct DefectParams {
   double lag1 = 0;      // a, the weight of η_{t−1}: parse_defect solves a·√(1−a²) = ρ for the ρ asked for
   double mean = 0;      // μ: ⟨ζ⟩
   double aniso = 0;     // κ: the variance along z is (1 + 2κ)/(1 − κ) times the variance in the x-y plane
+  // key=N: N replaces the second word of the base's key, so that defect:key=N for distinct N are independent
+  // good generators (the null variants of a calibration at a study's own size); -1 keeps the generator's key.
+  std::int64_t key = -1;
 
   double scale() const { return std::sqrt(1.0 + variance); }
   double fresh() const { return std::sqrt(1.0 - lag1 * lag1); }
 };
 
-// "defect:variance=0.01,lag1=0.1,mean=0.02,aniso=0.1,base=philox4x32": keys in any order, each at most once, all
-// optional; base = philox4x32 (10 rounds) is the only base. InputError naming the fault otherwise (ε ≤ −1,
+// "defect:variance=0.01,lag1=0.1,mean=0.02,aniso=0.1,key=7,base=philox4x32": keys in any order, each at most
+// once, all optional (key an integer in [0, 2^32)); base = philox4x32 (10 rounds) is the only base. InputError naming the fault otherwise (ε ≤ −1,
 // |ρ| > 1/2, κ outside (−1/2, 1) where a direction's variance would not be positive, a non-finite number, an
 // unknown key).
 inline constexpr std::string_view kDefectPrefix = "defect:";
@@ -92,6 +95,7 @@ struct Defect {
   Base b() const {
     Base g;
     g.key = key;
+    if (p.key >= 0) g.key[1] = static_cast<std::uint32_t>(p.key);
     return g;
   }
 };

@@ -35,11 +35,21 @@ struct CalibrationPlan {
   // Cells this process computes (round-robin over the pool's cells, as `study run --shard`): shards share the
   // pool directory, and the run that finds every cell stored analyses.
   Shard shard{};
+  // At the study's own size: every variant slot of the config (generator × rounds, under all its noises and Δt)
+  // holds its own good generator, defect:key=k (Philox4x32-10 under key k), so a null study has the config's
+  // variants, tests and Holm family. Null studies only (no defects); see at_size_pool.
+  bool at_size = false;
 };
 
 // The config's scene with the pool's generators and replicas, and without NIST cells (the battery reads words,
 // and a defect generator's words are its base's). InputError for the bilayer scene.
 StudyConfig calibration_pool(const StudyConfig& config, const CalibrationPlan& plan);
+// The at-size pool: the config with slot k's generator replaced by defect:key=k, replicas = null_studies ×
+// replicas, and reference replicas enough for each null study to hold its own `reference_replica_count()`:
+// null study s compares variant replicas [sR, sR + R) with the same reference replicas (same initial states)
+// plus R_ref − R extra ones of its own, numbered from null_studies × R. InputError for configs whose Δt carry
+// extra replicas, integrators or reference gammas (their blocks are not laid out here).
+StudyConfig at_size_pool(const StudyConfig& config, const CalibrationPlan& plan);
 // Pool replicas holding defect cells: power_studies × the largest replica count.
 int defect_replicas(const StudyConfig& config, const CalibrationPlan& plan);
 
@@ -56,6 +66,16 @@ struct NullRow {
   // The raw (uncorrected) two-sided P-value of every test of every good-generator variant in these null studies,
   // for the QQ plot against the uniform distribution they follow under the null.
   std::vector<double> p_values;
+  std::size_t tests_per_study = 0;  // the Holm family of one null study (at_size: the config's own family)
+};
+
+// At the study's own size, how often a good generator is shown equivalent on an observable (its margin from the
+// config): the replicas that verdict needs.
+struct EquivalenceRow {
+  int replicas = 0, reference_replicas = 0;
+  std::string observable;
+  double margin = 0;
+  Rate equivalent;  // variant verdicts (slot × noise) whose equivalence test passes
 };
 
 struct PowerRow {
@@ -83,7 +103,13 @@ struct Calibration {
   std::string error_control;
   long steps = 0, production = 0;
   int config_replicas = 0, pool_replicas = 0, defect_replicas = 0;
+  bool at_size = false;
+  int reference_replicas = 0;  // of each null study at the config's size (at_size)
+  // at_size: the null studies asked for; `nulls` adds up those recorded so far (its studies.trials), so a
+  // calibration carried over several sittings reports what it holds.
+  int null_studies_planned = 0;
   std::vector<NullRow> nulls;
+  std::vector<EquivalenceRow> equivalence;  // at_size only
   std::vector<PowerRow> power;
   std::vector<Threshold> thresholds;
   std::size_t cells = 0, computed = 0, resumed = 0, failed = 0;
@@ -100,6 +126,8 @@ nlohmann::json calibration_key(const StudyConfig& config);
 
 // Computes the pool's missing cells of the plan's shard one at a time (each with `threads` threads), saving each
 // to `store`, then analyses, unless cells of other shards are still missing (`missing` > 0, nothing else set).
+// At size, a null study is analysed as soon as its cells are stored and kept as pool/null-studies/study-NNN.json;
+// the result adds up the recorded studies (`missing` counts the cells of the others).
 // Progress and an ETA on `progress` when given.
 Calibration calibrate(const StudyConfig& config, const CalibrationPlan& plan, Store& store, const MeasureFn& measure,
                       int threads, std::ostream* progress);
