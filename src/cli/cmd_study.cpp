@@ -79,6 +79,7 @@ void merge(const std::vector<std::string>& dirs, const std::string& out_dir) {
 struct CalibrateArgs {
   std::string config, out, replicas, variance = "0.0025,0.005,0.01,0.02", lag1, mean, aniso, shard = "1/1";
   int null_studies = 100, power_studies = 10, threads = 1;
+  double max_minutes = 0;
   bool json = false, no_charts = false, at_size = false;
   bool variance_given = false;  // --at-size runs no defects unless --variance is named (then refused)
 };
@@ -127,6 +128,7 @@ void calibrate_cmd(const CalibrateArgs& a) {
   plan.mean = real_list(a.mean, "--mean", {-1e6, 1e6, false, false});
   plan.aniso = real_list(a.aniso, "--aniso", {-0.5, 1.0, true, true});
   plan.shard = parse_shard(a.shard);
+  plan.max_seconds = 60 * a.max_minutes;
   // Every input checked before anything is written.
   const StudyConfig pool = plan.at_size ? at_size_pool(config, plan) : calibration_pool(config, plan);
   validate_scene(pool);
@@ -230,6 +232,8 @@ const bool registered = register_command(60, [](CLI::App& root) {
               "null studies at the config's own size: every variant slot (generator x rounds) gets its own good "
               "generator, defect:key=k, so each null study has the config's variants, tests and Holm family; "
               "also reports how often those are shown equivalent per replica count (no defects)");
+  add_real(*k, "--max-minutes", ca->max_minutes,
+           "start no cell after this many minutes (0: no limit); rerun the same command to go on", {0, 1e6, false, false});
   k->add_flag("--json", ca->json, "print calibration.json on standard output");
   k->add_flag("--no-charts", ca->no_charts, "skip gnuplot");
   k->callback([ca, variance] {

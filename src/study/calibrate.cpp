@@ -249,12 +249,20 @@ StudyConfig calibration_pool(const StudyConfig& config, const CalibrationPlan& p
 
 namespace calibration_detail {
 
-void compute_cells(const std::vector<Cell>& todo, const StudyConfig& pool, const MeasureFn& measure, int threads,
-                   Store& store, std::ostream* progress, const std::function<void(const Cell&)>& saved) {
+std::size_t compute_cells(const std::vector<Cell>& todo, const StudyConfig& pool, const MeasureFn& measure,
+                          int threads, Store& store, std::ostream* progress,
+                          const std::function<void(const Cell&)>& saved, double max_seconds) {
   using clock = std::chrono::steady_clock;
+  const auto start = clock::now();
   double busy = 0;
   for (std::size_t k = 0; k < todo.size(); ++k) {
     const auto c0 = clock::now();
+    if (max_seconds > 0 && k > 0 && std::chrono::duration<double>(c0 - start).count() >= max_seconds) {
+      if (progress)
+        *progress << "[calibrate] time limit reached after " << k << " cells; " << todo.size() - k
+                  << " left: rerun the same command to go on\n";
+      return k;
+    }
     CellResult r;
     try {
       r = measure(todo[k], pool, threads);
@@ -276,6 +284,7 @@ void compute_cells(const std::vector<Cell>& todo, const StudyConfig& pool, const
     }
     if (saved) saved(todo[k]);
   }
+  return todo.size();
 }
 
 std::vector<CellResult> load_cells(const Store& store) {
@@ -334,7 +343,7 @@ Calibration calibrate(const StudyConfig& config, const CalibrationPlan& plan, St
               << " pool replicas, defects on the first " << q << "), shard " << plan.shard.index << "/"
               << plan.shard.count << ": " << out.resumed << " stored, " << todo.size() << " to compute, into "
               << store.dir().string() << "\n";
-  compute_cells(todo, pool, measure, threads, store, progress, nullptr);
+  out.computed = compute_cells(todo, pool, measure, threads, store, progress, nullptr, plan.max_seconds);
 
   for (const auto& c : all) out.missing += !store.has(c);
   if (out.missing > 0) return out;

@@ -197,7 +197,8 @@ Calibration calibrate_at_size(const StudyConfig& config, const CalibrationPlan& 
     if (!records[std::size_t(s)])
       records[std::size_t(s)] = record_if_complete(pool, l, store, by_study[std::size_t(s)], s);
   };
-  compute_cells(todo, pool, measure, threads, store, progress, [&](const Cell& c) { complete(l.study_of(c)); });
+  out.computed = compute_cells(todo, pool, measure, threads, store, progress,
+                               [&](const Cell& c) { complete(l.study_of(c)); }, plan.max_seconds);
   for (int s = 0; s < l.studies; ++s) complete(s);
 
   std::vector<NullStudy> done;

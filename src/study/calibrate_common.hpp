@@ -17,9 +17,11 @@ bool says_differs(const VariantReport& v, double alpha);
 void append_p_values(const VariantReport& v, std::vector<double>& out);
 
 // Computes `todo` one cell at a time (each with `threads` threads) into `store`, a failure stored as a failed
-// cell; progress lines with an ETA on `progress`; `saved` is called after each cell is stored.
-void compute_cells(const std::vector<Cell>& todo, const StudyConfig& pool, const MeasureFn& measure, int threads,
-                   Store& store, std::ostream* progress, const std::function<void(const Cell&)>& saved);
+// cell; progress lines with an ETA on `progress`; `saved` is called after each cell is stored. No cell is started
+// once `max_seconds` (> 0) have passed since the call (the first always is). Returns the number computed.
+std::size_t compute_cells(const std::vector<Cell>& todo, const StudyConfig& pool, const MeasureFn& measure,
+                          int threads, Store& store, std::ostream* progress,
+                          const std::function<void(const Cell&)>& saved, double max_seconds);
 // Every cell file of the store; OutputError naming the first unreadable one.
 std::vector<CellResult> load_cells(const Store& store);
 // The scene, α, run length and replica counts the calibration holds for.

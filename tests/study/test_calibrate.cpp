@@ -357,4 +357,37 @@ TEST(Calibrate, AtSizeNullStudiesHaveTheStudysVariants) {
   EXPECT_THROW(at_size_pool(cfg, plan), InputError);
 }
 
+// A time limit stops a long calibration between cells: what is stored stays, nothing is analysed until a null
+// study is complete, and the next run goes on from there to the same result as one uninterrupted run.
+TEST(Calibrate, TimeLimitStopsBetweenCellsAndTheRerunGoesOn) {
+  const StudyConfig cfg = parse_config(fake::small_config_toml("calib-limit", 2), "c.toml");
+  CalibrationPlan plan;
+  plan.at_size = true;
+  plan.null_studies = 2;
+  plan.variance.clear();
+  plan.max_seconds = 1e-9;  // past before the second cell starts
+  TempDir tmp;
+  Store store(tmp.path / "pool");
+  fake::FakeMeasure m;
+  const auto measure = [&](const Cell& x, const StudyConfig& s, int t) { return m(x, s, t); };
+  const Calibration first = calibrate(cfg, plan, store, measure, 1, nullptr);
+  EXPECT_EQ(first.computed, 1u);
+  EXPECT_EQ(first.missing, first.cells - 1);
+  EXPECT_TRUE(first.nulls.empty());
+  plan.max_seconds = 0;
+  const Calibration rest = calibrate(cfg, plan, store, measure, 1, nullptr);
+  EXPECT_EQ(rest.computed, first.cells - 1);
+  EXPECT_EQ(rest.missing, 0u);
+  ASSERT_EQ(rest.nulls.size(), 1u);
+  EXPECT_EQ(rest.nulls[0].studies.trials, 2u);
+
+  TempDir whole_dir;
+  Store whole_store(whole_dir.path / "pool");
+  fake::FakeMeasure m2;
+  const Calibration whole =
+      calibrate(cfg, plan, whole_store, [&](const Cell& x, const StudyConfig& s, int t) { return m2(x, s, t); }, 1,
+                nullptr);
+  EXPECT_EQ(whole.nulls[0].p_values, rest.nulls[0].p_values);
+}
+
 }  // namespace dpdrng_test::study_test_calibrate

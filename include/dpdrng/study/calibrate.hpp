@@ -39,6 +39,9 @@ struct CalibrationPlan {
   // holds its own good generator, defect:key=k (Philox4x32-10 under key k), so a null study has the config's
   // variants, tests and Holm family. Null studies only (no defects); see at_size_pool.
   bool at_size = false;
+  // Stop starting cells after this many seconds of this invocation (0: no limit); what is stored stays, and a
+  // rerun goes on from there. For calibrations longer than one sitting.
+  double max_seconds = 0;
 };
 
 // The config's scene with the pool's generators and replicas, and without NIST cells (the battery reads words,
