@@ -137,9 +137,9 @@ void calibrate_cmd(const CalibrateArgs& a) {
   Store store(out / "pool");
   Calibration c = calibrate(config, plan, store, measure_cell, a.threads, &std::cerr);
   if (c.missing > 0) {
-    std::cerr << "[calibrate] shard " << plan.shard.index << "/" << plan.shard.count << " done; " << c.missing
-              << " cells of other shards not stored yet: run the other shards (or calibrate without --shard) "
-                 "into the same --out to finish\n";
+    std::cerr << "[calibrate] shard " << plan.shard.index << "/" << plan.shard.count << " stopped; " << c.missing
+              << " cells not stored yet (other shards', or left by --max-minutes): run the same command again, and "
+                 "any other shards, into the same --out to finish\n";
     if (c.nulls.empty()) return;
     std::cerr << "[calibrate] summary of the " << c.nulls.front().studies.trials << " of " << c.null_studies_planned
               << " null studies recorded so far\n";
