@@ -287,6 +287,17 @@ std::size_t compute_cells(const std::vector<Cell>& todo, const StudyConfig& pool
   return todo.size();
 }
 
+std::vector<Cell> shard_todo(const std::vector<Cell>& cells, Shard shard, const Store& store, Calibration& out) {
+  std::vector<Cell> todo;
+  for (const auto& c : select_shard(cells, shard)) {
+    if (store.has(c))
+      ++out.resumed;
+    else
+      todo.push_back(c);
+  }
+  return todo;
+}
+
 std::vector<CellResult> load_cells(const Store& store) {
   std::vector<UnreadableCell> unreadable;
   std::vector<CellResult> cells = store.load_all(&unreadable);
@@ -325,18 +336,11 @@ Calibration calibrate(const StudyConfig& config, const CalibrationPlan& plan, St
   const StudyConfig pool = calibration_pool(config, plan);
   const int q = defect_replicas(config, plan);
   store.open_for(pool);
-  std::vector<Cell> todo, all;
+  std::vector<Cell> all;
   for (const auto& c : enumerate_cells(pool))
     if (c.reference || is_good(c.generator) || c.replica < q) all.push_back(c);
   Calibration out;
-  for (const auto& c : select_shard(all, plan.shard)) {
-    if (store.has(c)) {
-      ++out.resumed;
-    } else {
-      todo.push_back(c);
-      ++out.computed;
-    }
-  }
+  const std::vector<Cell> todo = shard_todo(all, plan.shard, store, out);
   out.cells = all.size();
   if (progress)
     *progress << "[calibrate] " << config.name << ": " << all.size() << " cells (" << pool.replicas

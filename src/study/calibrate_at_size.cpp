@@ -177,15 +177,7 @@ Calibration calibrate_at_size(const StudyConfig& config, const CalibrationPlan& 
       open.insert(open.end(), by_study[std::size_t(s)].begin(), by_study[std::size_t(s)].end());
   }
   Calibration out;
-  std::vector<Cell> todo;
-  for (const auto& c : select_shard(open, plan.shard)) {
-    if (store.has(c)) {
-      ++out.resumed;
-    } else {
-      todo.push_back(c);
-      ++out.computed;
-    }
-  }
+  const std::vector<Cell> todo = shard_todo(open, plan.shard, store, out);
   for (const auto& cells : by_study) out.cells += cells.size();
   const auto recorded = std::count_if(records.begin(), records.end(), [](const auto& r) { return r.has_value(); });
   if (progress)

@@ -22,6 +22,8 @@ void append_p_values(const VariantReport& v, std::vector<double>& out);
 std::size_t compute_cells(const std::vector<Cell>& todo, const StudyConfig& pool, const MeasureFn& measure,
                           int threads, Store& store, std::ostream* progress,
                           const std::function<void(const Cell&)>& saved, double max_seconds);
+// The cells of `shard` not stored yet; those stored are counted in out.resumed.
+std::vector<Cell> shard_todo(const std::vector<Cell>& cells, Shard shard, const Store& store, Calibration& out);
 // Every cell file of the store; OutputError naming the first unreadable one.
 std::vector<CellResult> load_cells(const Store& store);
 // The scene, α, run length and replica counts the calibration holds for.
