@@ -352,17 +352,17 @@ double curve_error(const std::vector<double>& curve, const std::vector<double>& 
 
 const std::vector<BilayerObservable>& bilayer_observables() {
   static const std::vector<BilayerObservable> obs = {
-      {"temperature", "T", "kinetic temperature k_BT"},
-      {"temperature_x", "T_x", "kinetic temperature of the x components"},
-      {"temperature_y", "T_y", "kinetic temperature of the y components"},
-      {"temperature_z", "T_z", "kinetic temperature of the z components (normal to the membrane)"},
-      {"pressure_xx", "P_xx", "pressure tensor P_xx"},
-      {"pressure_yy", "P_yy", "pressure tensor P_yy"},
-      {"pressure_zz", "P_zz", "pressure tensor P_zz (normal to the membrane)"},
-      {"pressure_xx_minus_yy", "P_xx − P_yy", "in-plane anisotropy P_xx − P_yy (0 by symmetry about z)"},
-      {"tension", "Σ", "tension L_z[P_zz − (P_xx+P_yy)/2]"},
-      {"thickness", "thickness", "head-density peak to peak"},
-      {"tail_order", "order", "tail order P2 against z"},
+      {"temperature", "T", "kinetic temperature k_BT", "k_BT"},
+      {"temperature_x", "T_x", "kinetic temperature of the x components", "k_BT"},
+      {"temperature_y", "T_y", "kinetic temperature of the y components", "k_BT"},
+      {"temperature_z", "T_z", "kinetic temperature of the z components (normal to the membrane)", "k_BT"},
+      {"pressure_xx", "P_xx", "pressure tensor P_xx", "k_BT/r_c³"},
+      {"pressure_yy", "P_yy", "pressure tensor P_yy", "k_BT/r_c³"},
+      {"pressure_zz", "P_zz", "pressure tensor P_zz (normal to the membrane)", "k_BT/r_c³"},
+      {"pressure_xx_minus_yy", "P_xx − P_yy", "in-plane anisotropy P_xx − P_yy (0 by symmetry about z)", "k_BT/r_c³"},
+      {"tension", "Σ", "tension L_z[P_zz − (P_xx+P_yy)/2]", "k_BT/r_c²"},
+      {"thickness", "thickness", "head-density peak to peak", "r_c"},
+      {"tail_order", "order", "tail order P2 against z", "1"},
   };
   return obs;
 }

@@ -232,25 +232,24 @@ void power_chart(const Calibration& c, const fs::path& dir, bool run, std::ostre
   detail::Chart ch;
   ch.name = "power";
   ch.title = "Detection probability of a " + kind + " defect (" + c.config_name + ", α = " + detail::num(c.alpha) + ")";
-  ch.xlabel = kind_what(kind);
-  ch.ylabel = "P(verdict \"differs\")";
-  ch.extra = "set logscale x\nset yrange [0:1.05]\n";
+  ch.x = detail::Axis{kind_what(kind), "1", detail::Scale::log10};
+  ch.y = detail::Axis{"P(verdict \"differs\"), 95 % CI", "1"};
+  ch.columns = {"size", "power", "ci_low", "ci_high"};
+  ch.key = "inside top left";
+  ch.extra = "set yrange [0:1.05]\n" + detail::hline(0.5, "50 %", "#555555") + detail::hline(0.9, "90 %", "#555555");
   double lo = INFINITY, hi = -INFINITY;
   std::map<int, detail::Line> lines;
   for (const auto& p : c.power) {
     if (p.kind != kind || p.size <= 0) continue;
     detail::Line& l = lines[p.replicas];
     l.title = std::to_string(p.replicas) + " replicas";
-    l.style = "using 1:2:3:4 with yerrorlines lw 2";
+    l.style = "using 2:3:4:5 with yerrorlines lw 2 pt " + std::to_string(detail::rounds_point(int(lines.size())));
     l.rows.push_back({p.size, p.detected.rate, p.detected.low, p.detected.high});
     lo = std::min(lo, p.size), hi = std::max(hi, p.size);
   }
   for (auto& [r, l] : lines) ch.lines.push_back(l);
   if (ch.lines.empty()) return;
   ch.extra += "set xrange [" + detail::num(lo / 1.25) + ":" + detail::num(hi * 1.25) + "]\n";
-  for (double level : {0.5, 0.9})
-    ch.lines.push_back({detail::num(100 * level) + " %", "using 1:2 with lines dt 2 lc rgb 'gray40'",
-                        {{lo, level}, {hi, level}}, {}});
   detail::render(ch, dir, run, log);
 }
 
@@ -258,18 +257,19 @@ void false_alarm_chart(const Calibration& c, const fs::path& dir, bool run, std:
   detail::Chart ch;
   ch.name = "false_alarms";
   ch.title = "False alarms of good generators (" + c.config_name + ")";
-  ch.xlabel = "replicas";
-  ch.ylabel = "rate";
-  ch.extra = "set xrange [0:*]\nset yrange [0:*]\n";
-  detail::Line v{"null verdicts \"differs\"", "using 1:2:3:4 with yerrorbars pt 7 ps 1.2", {}, {}};
-  detail::Line s{"studies with any \"differs\"", "using 1:2:3:4 with yerrorbars pt 5 ps 1.2", {}, {}};
+  ch.x = detail::Axis{"replicas per variant", "1"};
+  ch.y = detail::Axis{"false-alarm rate, 95 % CI", "1"};
+  ch.columns = {"replicas", "rate", "ci_low", "ci_high"};
+  detail::Line v{"null verdicts \"differs\"", "using 2:3:4:5 with yerrorbars pt 7 ps 1.2", {}, {}};
+  detail::Line s{"studies with any \"differs\"", "using 2:3:4:5 with yerrorbars pt 5 ps 1.2", {}, {}};
   double hi = 0;
   for (const auto& n : c.nulls) {
     v.rows.push_back({double(n.replicas) - 0.15, n.verdicts.rate, n.verdicts.low, n.verdicts.high});
     s.rows.push_back({double(n.replicas) + 0.15, n.studies.rate, n.studies.low, n.studies.high});
     hi = std::max(hi, double(n.replicas) + 1);
   }
-  ch.lines = {v, s, {"α", "using 1:2 with lines dt 2 lc rgb 'red'", {{0, c.alpha}, {hi, c.alpha}}, {}}};
+  ch.extra = "set xrange [0:" + detail::num(hi) + "]\nset yrange [0:*]\n" + detail::hline(c.alpha, "α", "#B2182B");
+  ch.lines = {v, s};
   detail::render(ch, dir, run, log);
 }
 
@@ -306,19 +306,25 @@ void null_qq_chart(const Calibration& c, const fs::path& dir, bool run, std::ost
   ch.name = "null_p_qq";
   ch.title = "Null P-values against uniform (" + c.config_name + ", " + std::to_string(c.config_replicas) +
              " replicas, " + std::to_string(p.size()) + " tests), 95 % simultaneous band";
-  ch.xlabel = "expected -log10 p";
-  ch.ylabel = "observed -log10 p";
-  detail::Line obs{"null tests", "using 1:2 with points pt 7 ps 0.4", {}, {}};
-  detail::Line lo{"band", "using 1:2 with lines dt 2 lc rgb 'gray40'", {}, {}};
-  detail::Line hi{"", "using 1:2 with lines dt 2 lc rgb 'gray40'", {}, {}};
+  ch.x = detail::Axis{"expected −log₁₀ p", "1"};
+  ch.y = detail::Axis{"observed −log₁₀ p", "1"};
+  ch.columns = {"expected", "observed"};
+  ch.key = "inside top left";
+  detail::Line obs{"null tests", "using 2:3 with points pt 7 ps 0.4", {}, {}};
+  detail::Line lo{"95 % band", "using 2:3 with lines dt 2 lc rgb '#555555'", {}, {}};
+  detail::Line hi{"", "using 2:3 with lines dt 2 lc rgb '#555555'", {}, {}};
+  // Every test in the tail (expected p < 0.01), where a false alarm would show; a thinned bulk, so that a chart of
+  // tens of thousands of tests stays small (null_p_qq.csv holds them all).
+  const std::size_t stride = std::max<std::size_t>(1, p.size() / 2000);
   for (std::size_t i = 0; i < p.size(); ++i) {
     const double e = (double(i) + 0.5) / n;
+    if (e >= 0.01 && i % stride != 0) continue;
     obs.rows.push_back({lg(e), lg(p[i])});
     if (e + eps < 1) lo.rows.push_back({lg(e), lg(e + eps)});
     if (e - eps > 0) hi.rows.push_back({lg(e), lg(e - eps)});
   }
   const double top = lg(0.5 / n);
-  ch.lines = {obs, lo, hi, {"uniform", "using 1:2 with lines lc rgb 'red'", {{0, 0}, {top, top}}, {}}};
+  ch.lines = {obs, lo, hi, {"uniform", "using 2:3 with lines lc rgb '#B2182B'", {{0, 0}, {top, top}}, {}}};
   detail::render(ch, dir, run, log);
 }
 
@@ -380,6 +386,7 @@ void write_calibration(const Calibration& c, const fs::path& dir, bool charts, s
   if (!charts) return;
   const bool run = detail::has_gnuplot();
   if (!run && log) *log << "[calibrate] gnuplot not found: chart scripts written, not rendered\n";
+  detail::fresh_chart_directory(dir / "charts");
   power_chart(c, dir / "charts", run, log);
   false_alarm_chart(c, dir / "charts", run, log);
   null_qq_chart(c, dir / "charts", run, log);

@@ -35,16 +35,15 @@ std::string generator_of(const DecompResult& r) { return r.generator + " " + r.d
 
 // One chart per grid: a cluster per seeding, a bar per generator, the value `of` a row.
 detail::Chart grid_chart(const std::vector<DecompResult>& rows, const std::string& grid, const std::string& name,
-                         const std::string& title, const std::string& ylabel, bool logy,
-                         double (*of)(const DecompResult&)) {
-  detail::Chart c{name + "_" + grid, title + ", domains " + grid, "seeding", ylabel, false, logy,
-                  "set style data histograms\nset style histogram clustered gap 1\n"
-                  "set style fill solid 0.8 border -1\nset xtics noenhanced rotate by -30\n" +
-                      std::string(logy ? "" : "set yrange [0:*]\n"),
-                  {}, false};
+                         const std::string& title, const detail::Axis& y, double (*of)(const DecompResult&)) {
+  detail::Chart c{name + "_" + grid, title + ", domains " + grid, detail::Axis{"seeding", "", detail::Scale::categories},
+                  y, {"position", "value"}};
+  c.extra = "set style data histograms\nset style histogram clustered gap 1\n"
+            "set style fill solid 0.8 border -1\nset xtics noenhanced rotate by -30\n" +
+            std::string(y.scale == detail::Scale::linear ? "set yrange [0:*]\n" : "");
   const auto seedings = unique_in_order(rows, seeding_of);
   for (const auto& gen : unique_in_order(rows, generator_of)) {
-    detail::Line l{gen, "using 2:xtic(3)", {}, {}};
+    detail::Line l{gen, "using 3:xtic(4) " + detail::colour_style(gen), {}, {}};
     for (std::size_t s = 0; s < seedings.size(); ++s) {
       double v = NAN;
       for (const auto& r : rows)
@@ -135,10 +134,12 @@ std::string write_decomp_outputs(const DecompSweep& sw, const std::vector<Decomp
   for (const auto& r : rows) j.push_back(to_json(r));
   write_text_file(dir / "results.json", j.dump(1) + "\n");
   const bool gnuplot = detail::has_gnuplot();
+  detail::fresh_chart_directory(dir / "charts");
   for (const auto& g : unique_in_order(rows, grid_of))
-    for (const auto& c : {grid_chart(rows, g, "mismatch", "Boundary pairs whose two ζ differ", "%", false,
-                                     mismatch_percent),
-                          grid_chart(rows, g, "drift", "Momentum drift per bead, max |P(t) − P(0)|/N", "", true, drift)})
+    for (const auto& c : {grid_chart(rows, g, "mismatch", "Boundary pairs whose two ζ differ",
+                                     detail::Axis{"boundary pairs mismatched", "%"}, mismatch_percent),
+                          grid_chart(rows, g, "drift", "Momentum drift per bead, max |P(t) − P(0)|/N",
+                                     detail::Axis{"momentum drift per bead", "m r_c/τ", detail::Scale::log10}, drift)})
       if (detail::render(c, dir / "charts", gnuplot, log)) md += detail::chart_link(c.name, c.title);
   write_text_file(dir / "table.md", md);
   return md;

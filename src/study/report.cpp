@@ -13,6 +13,7 @@
 #include "dpdrng/common/output.hpp"
 #include "dpdrng/study/stability.hpp"
 #include "dpdrng/study/store.hpp"
+#include "report_chart.hpp"
 #include "report_common.hpp"
 
 namespace dpdrng::study {
@@ -91,8 +92,8 @@ std::string cells_csv(const std::vector<CellResult>& cells) {
 }
 
 std::string chart_link(const std::string& name, const std::string& alt) {
-  return "![" + alt + "](charts/" + name + ".png)  \n[SVG](charts/" + name + ".svg) · [gnuplot script](charts/" + name +
-         ".gp)\n\n";
+  return "![" + alt + "](charts/" + name + ".png)  \n[SVG](charts/" + name + ".svg) · [data](charts/" + name + ".csv) · [gnuplot script](charts/" +
+         name + ".gp)\n\n";
 }
 
 namespace {
@@ -240,6 +241,7 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
   write(dir / "rounds_figures.csv", rounds_figures_csv(rounds));
   std::vector<std::string> made;
   if (options.charts) {
+    detail::fresh_chart_directory(dir / "charts");
     made = write_charts(a, cells, dir / "charts", options.log);
     for (auto& n : write_rounds_charts(rounds, dir / "charts", options.log)) made.push_back(std::move(n));
   }
@@ -278,6 +280,8 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
         "comparison's pooled σ) stands beside it. ⟨ζ²⟩ = 1 is tested on the large-sample normal law of the mean "
         "of ζ² (its variance from ⟨ζ⁴⟩), a member of the study's one Holm family; **bold** = differs.\n\n"
      << zeta_markdown(a) << "\n"
+     << (have("predicted_vs_measured") ? chart("predicted_vs_measured", "predicted against measured temperature shift")
+                                       : std::string())
      << "### Which tests flag each generator × feed\n\n"
      << "χ² and lag-1 t look at one output word at a time and NIST at its bits; none of them sees how two "
         "uniforms combine into ζ, which ⟨ζ²⟩ does, and which the physics feels. χ², lag-1 t: **flags** when a "
@@ -295,7 +299,9 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
         "error control.\n\n";
   for (const auto& d : dists) {
     md << "### " << d << "\n\n" << pass_table_markdown(a, d) << "\n";
-    if (have("pass_vs_rounds_" + d)) md << chart("pass_vs_rounds_" + d, "pass fraction vs rounds, " + d);
+    for (const char* t : {"chi2", "ttest"})
+      if (have(std::string("pass_vs_rounds_") + t + "_" + d))
+        md << chart(std::string("pass_vs_rounds_") + t + "_" + d, std::string("pass fraction vs rounds, ") + t + ", " + d);
   }
 
   md << "## Physical observables against MT\n\n"
@@ -309,7 +315,7 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
         "calibrated by the effective number of independent bins). **Bold** = differs after the error control.\n\n";
   for (const auto& d : dists) {
     md << "### " << d << "\n\n" << observables_markdown(a, d) << "\n";
-    for (const auto& [n, alt] : {std::pair{"temperature_vs_rounds_", "temperature vs rounds"},
+    for (const auto& [n, alt] : {std::pair{"temperature_shift_vs_rounds_", "temperature shift vs rounds"},
                                  std::pair{"vpdf_", "velocity PDF"}, std::pair{"msd_", "MSD"},
                                  std::pair{"rdf_", "g(r)"}})
       if (have(n + d)) md << chart(n + d, std::string(alt) + ", " + d);
@@ -373,7 +379,6 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
      << cost_markdown(a) << "\n";
   for (const auto& d : dists) {
     if (have("cost_vs_rounds_" + d)) md << chart("cost_vs_rounds_" + d, "cost vs rounds (paper's Fig. 1), " + d);
-    if (have("step_vs_rounds_" + d)) md << chart("step_vs_rounds_" + d, "step time vs rounds, " + d);
   }
 
   md << detail::broken_cells_markdown(cells);
@@ -381,7 +386,7 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
      << "`verdicts.csv` (one row per variant × observable or test, and per variant), `error_budget.csv`, `summary.csv`, "
         "`pass_table.csv`, `observables.csv`, `zeta.csv`, `rounds_figures.csv`, `cells.csv` (every scalar of every cell)";
   for (const auto& f : nist_files) md << ", `" << f << "`";
-  md << "; charts in `charts/` (SVG, PNG and the gnuplot script of each); all data in `../study.h5` (h5py: "
+  md << "; charts in `charts/` (SVG and PNG, each drawn by its gnuplot script from the CSV beside it); all data in `../study.h5` (h5py: "
         "`h5py.File('study.h5')['cells']`).\n";
 
   write(dir / "report.md", md.str());

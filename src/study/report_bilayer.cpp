@@ -197,8 +197,8 @@ fs::path write_bilayer_report(const StudyConfig& config, const std::vector<CellR
      << "`summary.csv`, `verdicts.csv` (one row per generator × observable and per generator), `error_budget.csv`, "
         "`bilayer_table.csv` (means and CIs), `bilayer_differences.csv` (differences and their tests), `zeta.csv` "
         "(the force's weighted ⟨ζ²⟩ and the temperature shift its effective power predicts beside the measured one), "
-        "`cells.csv` (every scalar of every cell); charts in `charts/` (SVG, PNG and the gnuplot script of "
-        "each); all data in `../study.h5` (each cell's profile/z, profile/head, profile/tail, profile/water).\n";
+        "`cells.csv` (every scalar of every cell); charts in `charts/` (SVG and PNG, each drawn by its "
+        "gnuplot script from the CSV beside it); all data in `../study.h5` (each cell's profile/z, profile/head, profile/tail, profile/water).\n";
   detail::write_text(dir / "report.md", md.str());
   return dir / "report.md";
 }

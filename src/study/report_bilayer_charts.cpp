@@ -2,6 +2,7 @@
 // per generator with its 95 % CI beside the reference's.
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <ostream>
 #include <sstream>
 
@@ -11,8 +12,10 @@
 namespace dpdrng::study {
 namespace fs = std::filesystem;
 namespace {
+using detail::Axis;
 using detail::Chart;
 using detail::Line;
+using detail::Scale;
 
 std::vector<const VariantReport*> of_distribution(const Analysis& a, const std::string& dist) {
   std::vector<const VariantReport*> out;
@@ -21,21 +24,25 @@ std::vector<const VariantReport*> of_distribution(const Analysis& a, const std::
   return out;
 }
 
-// One colour per generator, one dash pattern per bead type: the reference thick and black.
+// One panel per bead type (small multiples), one colour per generator: the reference thick and black.
 Chart profiles(const std::vector<const VariantReport*>& vs, const std::string& dist) {
   Chart c{"bilayer_profiles_" + dist, "Number density across the bilayer, replica means (" + dist + ")",
-          "z relative to the bilayer midplane", "beads per unit volume", false, false, "", {}, false};
+          Axis{"z relative to the bilayer midplane", "r_c"}, Axis{"number density", "r_c⁻³"}, {"z", "density"}};
+  c.panels = {"heads (H)", "tails (T)", "water (W)"};
+  c.key = "inside center center";  // the water panel is empty around the midplane
   const std::pair<const char*, const char*> types[] = {{"profile/head", "H"}, {"profile/tail", "T"},
                                                        {"profile/water", "W"}};
+  std::map<std::string, int> of_family;  // a second variant of one family is dashed, a third dotted
   for (std::size_t k = 0; k < vs.size(); ++k) {
+    const int dash = 1 + of_family[detail::family_colour(vs[k]->key.generator)]++;
     const auto z = detail::mean_series(vs[k]->cells, "profile/z");
     for (std::size_t t = 0; t < 3; ++t) {
       const auto y = detail::mean_series(vs[k]->cells, types[t].first);
       if (z.empty() || y.size() != z.size()) continue;
       std::ostringstream style;
-      style << "using 1:2 with lines dt " << t + 1 << " lw " << (vs[k]->key.reference ? 4 : 2) << " lc "
-            << (vs[k]->key.reference ? std::string("rgb 'black'") : std::to_string(k));
-      Line l{vs[k]->key.label_and_seeding() + " " + types[t].second, style.str(), {}, {}};
+      style << "using 2:3 with lines dt " << dash << " lw " << (vs[k]->key.reference ? 4 : 2) << ' '
+            << detail::colour_style(vs[k]->key.generator);
+      Line l{vs[k]->key.label_and_seeding() + " " + vs[k]->key.noise(), style.str(), {}, {}, t};
       for (std::size_t i = 0; i < z.size(); ++i) l.rows.push_back({z[i], y[i]});
       c.lines.push_back(std::move(l));
     }
@@ -45,8 +52,10 @@ Chart profiles(const std::vector<const VariantReport*>& vs, const std::string& d
 
 Chart observable(const std::vector<const VariantReport*>& vs, const BilayerObservable& o, const std::string& dist) {
   Chart c{std::string("bilayer_") + o.name + "_" + dist,
-          std::string(o.what) + ": replica mean ± 95 % CI (" + dist + ")", "", o.label, false, false, "", {}, false};
-  Line l{"replica mean ± 95 % CI", "using 1:2:3:xtic(4) with yerrorbars pt 7 ps 1.5 lw 2", {}, {}};
+          std::string(o.what) + ": replica mean ± 95 % CI (" + dist + ")", Axis{"generator", "", Scale::categories},
+          Axis{o.label, o.unit}, {"position", "mean", "ci95"}};
+  c.key = "off";
+  Line l{"replica mean ± 95 % CI", "using 2:3:4:xtic(5) with yerrorbars pt 7 ps 1.5 lw 2", {}, {}};
   const std::string mean = std::string(o.name) + "_mean", sem = std::string(o.name) + "_sem";
   for (const auto* v : vs) {
     const ReplicaMean m = replica_mean(v->cells, mean, sem);
@@ -73,6 +82,7 @@ std::vector<std::string> write_bilayer_charts(const Analysis& a, const fs::path&
   std::vector<std::string> dists;
   for (const auto& v : a.variants)
     if (std::find(dists.begin(), dists.end(), v.key.noise()) == dists.end()) dists.push_back(v.key.noise());
+  detail::fresh_chart_directory(dir);
   std::vector<Chart> charts;
   for (const auto& d : dists) {
     const auto vs = of_distribution(a, d);

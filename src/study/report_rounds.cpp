@@ -31,7 +31,7 @@ struct RoundsFigure {
 const std::vector<RoundsFigure>& rounds_figure_specs() {
   static const std::vector<RoundsFigure> f = {
       {"4b", "temperature_components_vs_rounds", "Kinetic temperature per component, replica mean ± 95 % CI",
-       "k_BT_α = Σv_α²/(N − 1) (k_BT units)", {"temperature_x_mean", "temperature_y_mean", "temperature_z_mean"},
+       "k_BT_α = Σv_α²/(N − 1)", {"temperature_x_mean", "temperature_y_mean", "temperature_z_mean"},
        false},
       {"4d", "temperature_components_shift_vs_rounds", "Error rate of each temperature component against MT, |shift| with its 95 % CI",
        "(T_α − T_{α,MT}) / T_{α,MT}", {"temperature_x_mean", "temperature_y_mean", "temperature_z_mean"}, true},
@@ -41,6 +41,12 @@ const std::vector<RoundsFigure>& rounds_figure_specs() {
        "(g − g_{MT}) / g_{MT} in that bin", {"rdf_vs_mt"}, true},
   };
   return f;
+}
+
+std::size_t component_index(const RoundsFigure& f, const std::string& observable) {
+  std::size_t at = 0;
+  while (at < f.observables.size() && observable != f.observables[at]) ++at;
+  return at < f.observables.size() ? at : 0;
 }
 
 const char* sem_of(const std::string& observable) {
@@ -118,33 +124,34 @@ std::vector<std::string> write_rounds_charts(const std::vector<RoundsRow>& rows,
     const std::string name = std::string(f->name) + "_" + k.noise();
     auto& c = charts[name];
     if (c.name.empty()) {
-      c = detail::Chart{name, std::string(f->title) + " (" + k.noise() + "; the paper's Fig. " + f->id + ")",
-                        "rounds", f->ylabel, true, false, "", {}, false};
       // Errors span from a few 0.1 % to thousands of % (64TEA(1)): |shift| on a log axis, the paper's error
-      // rate; the bars span |shift| over the 95 % CI, down to the floor when the CI holds 0.
-      c.logy = f->shift;
-      if (f->shift) {
-        c.ylabel = std::string("|") + f->ylabel + "| in % (log scale; floor " + num(kRoundsFloor) + " %: CI holds 0)";
-        c.extra = "set yrange [" + num(kRoundsFloor) + ":*]\n";
-      }
-      c.auto_logy = !f->shift;  // 64TEA(1)'s components reach tens of k_BT
+      // rate; the bars span |shift| over the 95 % CI, down to the floor when the CI holds 0. The components
+      // themselves span decades too where 64TEA(1) heats the fluid to tens of k_BT.
+      c = detail::Chart{name, std::string(f->title) + " (" + k.noise() + "; the paper's Fig. " + f->id + ")",
+                        detail::Axis{"hash rounds", "1", detail::Scale::log2},
+                        detail::Axis{f->shift ? std::string("|") + f->ylabel + "| (floor " + num(kRoundsFloor) +
+                                                    " %: CI holds 0)"
+                                              : std::string(f->ylabel),
+                                     f->shift ? "%" : "k_BT", detail::Scale::log10},
+                        {"rounds", "value", "ci_low", "ci_high"}};
+      c.key = "inside top right";
+      if (f->shift) c.extra = "set yrange [" + num(kRoundsFloor) + ":*]\n";
     }
-    const std::string component = observable_label(r.observable);
+    // The three components in three panels (small multiples), each family's line in each; the reference's value
+    // a dashed level in its component's panel.
+    const std::size_t panel = component_index(*f, r.observable);
+    if (f->observables.size() > 1 && c.panels.empty())
+      for (const char* o : f->observables) c.panels.push_back(observable_label(o));
+    const std::string title = (k.reference ? k.label() + " (reference)" : k.generator + " " + k.seeding_name());
+    auto& l = lines[name][title + "\t" + std::to_string(panel)];
+    l.title = title;
+    l.panel = panel;
     if (k.reference) {
-      // The components' levels nearly coincide: their labels side by side.
-      std::size_t at = 0;
-      while (at < f->observables.size() && r.observable != f->observables[at]) ++at;
-      std::ostringstream s;
-      s << "set arrow from graph 0, first " << r.value << " to graph 1, first " << r.value
-        << " nohead dt 2 lw 1 lc rgb 'gray40'\nset label " << detail::q(k.label() + " " + component) << " at graph "
-        << 0.01 + 0.3 * double(at) << ", first " << r.value << " offset 0,0.6 tc rgb 'gray40'\n";
-      c.extra += s.str();
+      l.style = "using 2:3 with lines dt 2 lw 2 lc rgb 'black'";
+      l.rows = {{1, r.value}, {1, r.value}};  // its right end set once the chart's rounds are known
       continue;
     }
-    const std::string title = k.generator + " " + k.seeding_name() + (f->observables.size() > 1 ? " " + component : "");
-    auto& l = lines[name][title];
-    l.title = title;
-    l.style = "using 1:2:3:4 with yerrorlines lw 2 pt 7";
+    l.style = "using 2:3:4:5 with yerrorlines lw 2 pt 7 " + detail::colour_style(k.generator);
     if (f->shift) {
       const double top = std::max(std::abs(r.ci_low), std::abs(r.ci_high));
       const double bottom = r.ci_low <= 0 && r.ci_high >= 0 ? kRoundsFloor
@@ -158,7 +165,18 @@ std::vector<std::string> write_rounds_charts(const std::vector<RoundsRow>& rows,
   const bool run = detail::has_gnuplot();
   std::vector<std::string> made;
   for (auto& [name, c] : charts) {
-    for (auto& [t, l] : lines[name]) c.lines.push_back(std::move(l));
+    double most = 1;  // the reference's level spans the rounds drawn
+    for (auto& [t, l] : lines[name])
+      for (const auto& row : l.rows) most = l.style.find("yerror") != std::string::npos ? std::max(most, row[0]) : most;
+    double lo = INFINITY, hi = 0;
+    for (auto& [t, l] : lines[name]) {
+      if (l.style.find("yerror") == std::string::npos) l.rows.back()[0] = most;
+      for (const auto& row : l.rows) lo = std::min(lo, row[1]), hi = std::max(hi, row[1]);
+      c.lines.push_back(std::move(l));
+    }
+    // A log axis only where the values span a decade (64TEA(1)'s components at tens of k_BT); otherwise the
+    // few-% differences stay visible on a linear one.
+    if (c.y.unit == "k_BT" && !(lo > 0 && hi / lo > 10)) c.y.scale = detail::Scale::linear;
     if (detail::render(c, dir, run, log)) made.push_back(name);
   }
   return made;

@@ -324,7 +324,8 @@ fs::path write_stability_report(const StudyConfig& config, const std::vector<Cel
   md << "## Stability map\n\n"
      << "Stable replicas / replicas per method and Δt (**bold**: at least one blew up, @ the earliest step).\n\n"
      << stability_map_markdown(a) << "\n";
-  if (have("stability_map")) md << detail::chart_link("stability_map", "fraction stable against dt");
+  if (have("stability_map"))
+    md << detail::chart_link("stability_map", "k_BT − 1 by Δt and integrator, per generator and noise");
 
   md << "## Accuracy frontiers\n\n"
      << "Per method and thermometer, the bracket *inside – outside*: *inside* is the largest Δt whose 95 % CI of the "
@@ -391,17 +392,18 @@ fs::path write_stability_report(const StudyConfig& config, const std::vector<Cel
      << " pooled over the integrators: P_c = " << fmt("%.4f", a.reference_pressure)
      << ", D = " << fmt("%.5f", a.reference_diffusion)
      << "; g(r) error: mean relative deviation where g_ref ≥ 0.1). Cost: median wall seconds of a step / Δt over "
-        "the stable replicas. A method × Δt whose replicas all blew up has a row and a red mark on the charts' top "
-        "edge, never a value. From `stability.csv`.\n\n"
+        "the stable replicas. A method × Δt whose replicas all blew up has a row and a cross on the maps, never a "
+        "value. The maps show each error by Δt and integrator, a panel per generator and noise (colour clipped "
+        "at 10 %). From `stability.csv`.\n\n"
      << accuracy_markdown(a) << "\n";
-  for (const char* n : {"temperature", "pressure", "diffusion", "rdf"})
-    if (have(std::string("accuracy_cost_") + n))
-      md << detail::chart_link(std::string("accuracy_cost_") + n, std::string("accuracy against cost: ") + n);
+  for (const char* n : {"pressure", "diffusion", "rdf"})
+    if (have(std::string("stability_map_") + n))
+      md << detail::chart_link(std::string("stability_map_") + n, std::string("error map: ") + n);
 
   md << detail::broken_cells_markdown(cells);
   md << "\n## Files\n\n`stability.csv` (one row per method × Δt), `frontier.csv` (each method's brackets), "
         "`ranking.csv` (the integrators ranked), `crossing.csv` (noise error against integrator error), `cells.csv` "
-        "(every scalar of every cell); charts in `charts/` (SVG, PNG and the gnuplot script of each); all data in "
+        "(every scalar of every cell); charts in `charts/` (SVG and PNG, each drawn by its gnuplot script from the CSV beside it); all data in "
         "`../study.h5`.\n";
   detail::write_text(dir / "report.md", md.str());
   return dir / "report.md";

@@ -220,6 +220,7 @@ struct BilayerObservable {
   const char* name;   // "tension"
   const char* label;  // "Σ"
   const char* what;   // "tension L_z[P_zz − (P_xx+P_yy)/2]"
+  const char* unit;   // in DPD reduced units: "k_BT/r_c²"
 };
 const std::vector<BilayerObservable>& bilayer_observables();
 

@@ -107,4 +107,8 @@ std::vector<std::string> write_bilayer_charts(const Analysis& a, const std::file
 std::vector<std::string> write_charts(const Analysis& a, const std::vector<CellResult>& cells,
                                       const std::filesystem::path& dir, std::ostream* log);
 
+// Draws every chart under dir again from its committed NAME.csv and NAME.gp (no cells needed); returns how many
+// were drawn. InputError when dir holds no chart or gnuplot is missing.
+std::size_t redraw_charts(const std::filesystem::path& dir, std::ostream* log);
+
 }  // namespace dpdrng::study

@@ -1,12 +1,15 @@
 # pressure tensor P_xx: replica mean ± 95 % CI (gauss)
-# Rendered by: gnuplot -e "set terminal svg; set output 'x.svg'" bilayer_pressure_xx_gauss.gp
-set title "pressure tensor P_xx: replica mean ± 95 % CI (gauss)" noenhanced
-set xlabel ""
-set ylabel "P_xx"
+# Data: bilayer_pressure_xx_gauss.csv (column 1 the series; one block per series)
+# Redraw: gnuplot -e "set terminal svg; set output 'bilayer_pressure_xx_gauss.svg'" bilayer_pressure_xx_gauss.gp
+set xlabel "generator" noenhanced
+# x axis: categories
+set ylabel "P_xx [k_BT/r_c³]" noenhanced
 set grid
-set key outside right top noenhanced
+set datafile separator comma
 set datafile missing "nan"
+unset key
 set arrow from graph 0, first 18.1697 to graph 1, first 18.1697 nohead dt 2 lw 2 lc rgb 'black'
 set xrange [-0.5:2.5]
 set xtics rotate by -20
-plot "data/bilayer_pressure_xx_gauss_0.dat" using 1:2:3:xtic(4) with yerrorbars pt 7 ps 1.5 lw 2 title "replica mean ± 95 % CI"
+set title "pressure tensor P_xx: replica mean ± 95 % CI (gauss)" noenhanced
+plot "bilayer_pressure_xx_gauss.csv" index 0 using 2:3:4:xtic(5) with yerrorbars pt 7 ps 1.5 lw 2 title "replica mean ± 95 % CI"

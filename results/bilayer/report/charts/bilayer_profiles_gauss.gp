@@ -1,17 +1,25 @@
 # Number density across the bilayer, replica means (gauss)
-# Rendered by: gnuplot -e "set terminal svg; set output 'x.svg'" bilayer_profiles_gauss.gp
-set title "Number density across the bilayer, replica means (gauss)" noenhanced
-set xlabel "z relative to the bilayer midplane"
-set ylabel "beads per unit volume"
+# Data: bilayer_profiles_gauss.csv (column 1 the series; one block per series)
+# Redraw: gnuplot -e "set terminal svg; set output 'bilayer_profiles_gauss.svg'" bilayer_profiles_gauss.gp
+# small multiples: 3 panels
+set xlabel "z relative to the bilayer midplane [r_c]" noenhanced
+set ylabel "number density [r_c⁻³]" noenhanced
 set grid
-set key outside right top noenhanced
+set datafile separator comma
 set datafile missing "nan"
-plot "data/bilayer_profiles_gauss_0.dat" using 1:2 with lines dt 1 lw 4 lc rgb 'black' title "mt19937 H", \
-     "data/bilayer_profiles_gauss_1.dat" using 1:2 with lines dt 2 lw 4 lc rgb 'black' title "mt19937 T", \
-     "data/bilayer_profiles_gauss_2.dat" using 1:2 with lines dt 3 lw 4 lc rgb 'black' title "mt19937 W", \
-     "data/bilayer_profiles_gauss_3.dat" using 1:2 with lines dt 1 lw 2 lc 1 title "tea32(1) distance H", \
-     "data/bilayer_profiles_gauss_4.dat" using 1:2 with lines dt 2 lw 2 lc 1 title "tea32(1) distance T", \
-     "data/bilayer_profiles_gauss_5.dat" using 1:2 with lines dt 3 lw 2 lc 1 title "tea32(1) distance W", \
-     "data/bilayer_profiles_gauss_6.dat" using 1:2 with lines dt 1 lw 2 lc 2 title "tea32(32) distance H", \
-     "data/bilayer_profiles_gauss_7.dat" using 1:2 with lines dt 2 lw 2 lc 2 title "tea32(32) distance T", \
-     "data/bilayer_profiles_gauss_8.dat" using 1:2 with lines dt 3 lw 2 lc 2 title "tea32(32) distance W"
+unset key
+set multiplot layout 1,3 title "Number density across the bilayer, replica means (gauss)" noenhanced
+set title "heads (H)" noenhanced
+plot "bilayer_profiles_gauss.csv" index 0 using 2:3 with lines dt 1 lw 4 lc rgb '#000000' title "mt19937 gauss", \
+     "bilayer_profiles_gauss.csv" index 3 using 2:3 with lines dt 1 lw 2 lc rgb '#0072B2' title "tea32(1) distance gauss", \
+     "bilayer_profiles_gauss.csv" index 6 using 2:3 with lines dt 2 lw 2 lc rgb '#0072B2' title "tea32(32) distance gauss"
+set title "tails (T)" noenhanced
+plot "bilayer_profiles_gauss.csv" index 1 using 2:3 with lines dt 1 lw 4 lc rgb '#000000' title "mt19937 gauss", \
+     "bilayer_profiles_gauss.csv" index 4 using 2:3 with lines dt 1 lw 2 lc rgb '#0072B2' title "tea32(1) distance gauss", \
+     "bilayer_profiles_gauss.csv" index 7 using 2:3 with lines dt 2 lw 2 lc rgb '#0072B2' title "tea32(32) distance gauss"
+set title "water (W)" noenhanced
+set key inside center center noenhanced opaque box samplen 2 spacing 1.1 font ',10'
+plot "bilayer_profiles_gauss.csv" index 2 using 2:3 with lines dt 1 lw 4 lc rgb '#000000' title "mt19937 gauss", \
+     "bilayer_profiles_gauss.csv" index 5 using 2:3 with lines dt 1 lw 2 lc rgb '#0072B2' title "tea32(1) distance gauss", \
+     "bilayer_profiles_gauss.csv" index 8 using 2:3 with lines dt 2 lw 2 lc rgb '#0072B2' title "tea32(32) distance gauss"
+unset multiplot

@@ -1,12 +1,15 @@
 # head-density peak to peak: replica mean ± 95 % CI (gauss-blocks)
-# Rendered by: gnuplot -e "set terminal svg; set output 'x.svg'" bilayer_thickness_gauss-blocks.gp
-set title "head-density peak to peak: replica mean ± 95 % CI (gauss-blocks)" noenhanced
-set xlabel ""
-set ylabel "thickness"
+# Data: bilayer_thickness_gauss-blocks.csv (column 1 the series; one block per series)
+# Redraw: gnuplot -e "set terminal svg; set output 'bilayer_thickness_gauss-blocks.svg'" bilayer_thickness_gauss-blocks.gp
+set xlabel "generator" noenhanced
+# x axis: categories
+set ylabel "thickness [r_c]" noenhanced
 set grid
-set key outside right top noenhanced
+set datafile separator comma
 set datafile missing "nan"
+unset key
 set arrow from graph 0, first 4.9854 to graph 1, first 4.9854 nohead dt 2 lw 2 lc rgb 'black'
 set xrange [-0.5:2.5]
 set xtics rotate by -20
-plot "data/bilayer_thickness_gauss-blocks_0.dat" using 1:2:3:xtic(4) with yerrorbars pt 7 ps 1.5 lw 2 title "replica mean ± 95 % CI"
+set title "head-density peak to peak: replica mean ± 95 % CI (gauss-blocks)" noenhanced
+plot "bilayer_thickness_gauss-blocks.csv" index 0 using 2:3:4:xtic(5) with yerrorbars pt 7 ps 1.5 lw 2 title "replica mean ± 95 % CI"

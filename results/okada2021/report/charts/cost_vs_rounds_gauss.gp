@@ -1,15 +1,19 @@
 # Cost of one random number inside the DPD run (gauss)
-# Rendered by: gnuplot -e "set terminal svg; set output 'x.svg'" cost_vs_rounds_gauss.gp
-set title "Cost of one random number inside the DPD run (gauss)" noenhanced
-set xlabel "rounds"
-set ylabel "ns per number (generator + distribution)"
-set grid
-set key outside right top noenhanced
-set datafile missing "nan"
+# Data: cost_vs_rounds_gauss.csv (column 1 the series; one block per series)
+# Redraw: gnuplot -e "set terminal svg; set output 'cost_vs_rounds_gauss.svg'" cost_vs_rounds_gauss.gp
+set xlabel "hash rounds [1]" noenhanced
 set logscale x 2
-set logscale y
-set xrange [0.8:*]
-set arrow from graph 0, first 4.97784 to graph 1, first 4.97784 nohead dt 2 lw 2 lc rgb 'black'
-set label "mt19937" at graph 0.01, first 4.97784 offset 0,0.6 tc rgb 'black'
-plot "data/cost_vs_rounds_gauss_0.dat" using 1:2 with linespoints lw 2 pt 7 title "tea32 distance", \
-     "data/cost_vs_rounds_gauss_1.dat" using 1:2 with linespoints lw 2 pt 7 title "tea64 distance"
+set format x "%g"
+set offsets graph 0.03, graph 0.03, 0, 0
+set ylabel "cost per random number (generator + distribution) [ns]" noenhanced
+set logscale y 2
+set format y "%g"
+set grid
+set datafile separator comma
+set datafile missing "nan"
+set key inside top left noenhanced opaque box samplen 2 spacing 1.1 font ',10'
+set arrow from graph 0, first 4.86732 to graph 1, first 4.86732 nohead dt 2 lw 2 lc rgb 'black'
+set label "mt19937" at graph 0.01, first 4.86732 offset 0,0.6 font ',10' tc rgb 'black'
+set title "Cost of one random number inside the DPD run (gauss)" noenhanced
+plot "cost_vs_rounds_gauss.csv" index 0 using 2:3 with linespoints lw 2 pt 7 lc rgb '#0072B2' title "tea32 distance", \
+     "cost_vs_rounds_gauss.csv" index 1 using 2:3 with linespoints lw 2 pt 7 lc rgb '#E69F00' title "tea64 distance"

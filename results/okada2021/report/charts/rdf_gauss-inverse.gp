@@ -1,13 +1,15 @@
 # Radial distribution function (gauss-inverse)
-# Rendered by: gnuplot -e "set terminal svg; set output 'x.svg'" rdf_gauss-inverse.gp
-set title "Radial distribution function (gauss-inverse)" noenhanced
-set xlabel "r"
-set ylabel "g(r)"
+# Data: rdf_gauss-inverse.csv (column 1 the series; one block per series)
+# Redraw: gnuplot -e "set terminal svg; set output 'rdf_gauss-inverse.svg'" rdf_gauss-inverse.gp
+set xlabel "pair distance r [r_c]" noenhanced
+set ylabel "g(r) [1]" noenhanced
 set grid
-set key outside right top noenhanced
+set datafile separator comma
 set datafile missing "nan"
-plot "data/rdf_gauss-inverse_0.dat" using 1:2 with lines lw 4 lc rgb 'black' title "mt19937 (reference, 16 replicas)", \
-     "data/rdf_gauss-inverse_1.dat" using 1:2 with lines lw 2 title "tea32(1) distance", \
-     "data/rdf_gauss-inverse_2.dat" using 1:2 with lines lw 2 dt 3 title "tea32(32) distance", \
-     "data/rdf_gauss-inverse_3.dat" using 1:2 with lines lw 2 title "tea64(1) distance", \
-     "data/rdf_gauss-inverse_4.dat" using 1:2 with lines lw 2 dt 3 title "tea64(32) distance"
+set key inside top right noenhanced opaque box samplen 2 spacing 1.1 font ',10'
+set title "Radial distribution function (gauss-inverse)" noenhanced
+plot "rdf_gauss-inverse.csv" index 0 using 2:3 with lines lw 4 lc rgb 'black' title "mt19937 (reference, 16 replicas)", \
+     "rdf_gauss-inverse.csv" index 1 using 2:3 with lines lw 2 lc rgb '#0072B2' title "tea32(1) distance", \
+     "rdf_gauss-inverse.csv" index 2 using 2:3 with lines lw 2 lc rgb '#E69F00' title "tea64(1) distance", \
+     "rdf_gauss-inverse.csv" index 3 using 2:3 with lines lw 2 dt 3 lc rgb '#0072B2' title "tea32(32) distance", \
+     "rdf_gauss-inverse.csv" index 4 using 2:3 with lines lw 2 dt 3 lc rgb '#E69F00' title "tea64(32) distance"

@@ -1,15 +1,33 @@
-# Speed against evidence of a difference from MT (gauss-inverse)
-# Rendered by: gnuplot -e "set terminal svg; set output 'x.svg'" speed_vs_accuracy_gauss-inverse.gp
-set title "Speed against evidence of a difference from MT (gauss-inverse)" noenhanced
-set xlabel "ms per DPD step (cost)"
-set ylabel "-log10(smallest corrected p) (log scale, clipped to [0.01, 12])"
+# Cost against temperature shift (gauss-inverse; Intel(R) Xeon(R) Processor (family 6, model 207))
+# Data: speed_vs_accuracy_gauss-inverse.csv (column 1 the series; one block per series)
+# Redraw: gnuplot -e "set terminal svg; set output 'speed_vs_accuracy_gauss-inverse.svg'" speed_vs_accuracy_gauss-inverse.gp
+set xlabel "cost per random number (best of 5 × 4096 calls in the run) [ns]" noenhanced
+set logscale x 2
+set format x "%g"
+set offsets graph 0.03, graph 0.03, 0, 0
+set ylabel "k_BT shift against MT19937, 95 % CI [%]" noenhanced
 set grid
-set key outside right top noenhanced
+set datafile separator comma
 set datafile missing "nan"
-set logscale y
-set offsets graph 0.05, graph 0.15, graph 0.1, graph 0.1
-set yrange [0.01:*]
-set arrow from graph 0, first 2 to graph 1, first 2 nohead dt 2 lw 2 lc rgb 'red'
-set label "α (0.01)" at graph 0.9, first 2 offset 0,0.6 tc rgb 'red'
-plot "data/speed_vs_accuracy_gauss-inverse_0.dat" using 1:2:3 with labels point pt 7 ps 1.2 lc rgb 'dark-green' offset 0.8,0.6 left title "does not differ from MT", \
-     "data/speed_vs_accuracy_gauss-inverse_1.dat" using 1:2:3 with labels point pt 5 ps 1.2 lc rgb 'red' offset 0.8,0.6 left title "differs from MT"
+set key outside right top noenhanced opaque box samplen 2 spacing 1.1 font ',10'
+set object 1 rectangle from graph 0, first -1 to graph 1, first 1 behind fillcolor rgb '#DDEEDD' fillstyle solid 1.0 noborder
+set label 1 "equivalence margin ±1" at graph 0.01, first 1 offset 0,-0.8 font ',10' tc rgb '#336633' front
+set arrow 1 from graph 0, first 0 to graph 1, first 0 nohead lw 1 lc rgb 'black'
+set arrow from first 4.79543, graph 0 to first 4.79543, graph 1 nohead dt 2 lc rgb 'black'
+set label "mt19937" at first 4.79543, graph 0.96 offset 0.5,0 font ',10'
+set yrange [-2.3:2.3]
+set title "Cost against temperature shift (gauss-inverse; Intel(R) Xeon(R) Processor (family 6, model 207))" noenhanced
+plot "speed_vs_accuracy_gauss-inverse.csv" index 0 using 2:3:4:5:6 with yerrorbars pt variable ps 1.3 lw 1.5 lc rgb '#0072B2' title "tea32 distance", \
+     "speed_vs_accuracy_gauss-inverse.csv" index 1 using 2:3:4:5:6 with yerrorbars pt variable ps 1.3 lw 1.5 lc rgb '#E69F00' title "tea64 distance", \
+     "speed_vs_accuracy_gauss-inverse.csv" index 2 using 2:3:(column(7) > 0 ? 9 : 11) with points pt variable ps 1.6 lc rgb '#333333' title "", \
+     "speed_vs_accuracy_gauss-inverse.csv" index 3 using 2:3:8 with labels offset 1,0 left font ',10' tc rgb '#333333' title "", \
+     "speed_vs_accuracy_gauss-inverse.csv" index 4 using 2:3 with steps dt 2 lw 1 lc rgb '#555555' title "Pareto front", \
+     keyentry with points pt 7 lc rgb 'black' title "1 round", \
+     keyentry with points pt 5 lc rgb 'black' title "2 rounds", \
+     keyentry with points pt 9 lc rgb 'black' title "3 rounds", \
+     keyentry with points pt 13 lc rgb 'black' title "4 rounds", \
+     keyentry with points pt 11 lc rgb 'black' title "5 rounds", \
+     keyentry with points pt 15 lc rgb 'black' title "6 rounds", \
+     keyentry with points pt 6 lc rgb 'black' title "8 rounds", \
+     keyentry with points pt 4 lc rgb 'black' title "16 rounds", \
+     keyentry with points pt 8 lc rgb 'black' title "32 rounds"

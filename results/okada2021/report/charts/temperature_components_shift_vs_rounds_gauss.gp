@@ -1,18 +1,28 @@
 # Error rate of each temperature component against MT, |shift| with its 95 % CI (gauss; the paper's Fig. 4d)
-# Rendered by: gnuplot -e "set terminal svg; set output 'x.svg'" temperature_components_shift_vs_rounds_gauss.gp
-set title "Error rate of each temperature component against MT, |shift| with its 95 % CI (gauss; the paper's Fig. 4d)" noenhanced
-set xlabel "rounds"
-set ylabel "|(T_α − T_{α,MT}) / T_{α,MT}| in % (log scale; floor 0.001 %: CI holds 0)"
-set grid
-set key outside right top noenhanced
-set datafile missing "nan"
+# Data: temperature_components_shift_vs_rounds_gauss.csv (column 1 the series; one block per series)
+# Redraw: gnuplot -e "set terminal svg; set output 'temperature_components_shift_vs_rounds_gauss.svg'" temperature_components_shift_vs_rounds_gauss.gp
+# small multiples: 3 panels
+set xlabel "hash rounds [1]" noenhanced
 set logscale x 2
-set logscale y
-set xrange [0.8:*]
+set format x "%g"
+set offsets graph 0.03, graph 0.03, 0, 0
+set ylabel "|(T_α − T_{α,MT}) / T_{α,MT}| (floor 0.001 %: CI holds 0) [%]" noenhanced
+set logscale y 10
+set format y "%g"
+set grid
+set datafile separator comma
+set datafile missing "nan"
+unset key
 set yrange [0.001:*]
-plot "data/temperature_components_shift_vs_rounds_gauss_0.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea32 distance T_x", \
-     "data/temperature_components_shift_vs_rounds_gauss_1.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea32 distance T_y", \
-     "data/temperature_components_shift_vs_rounds_gauss_2.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea32 distance T_z", \
-     "data/temperature_components_shift_vs_rounds_gauss_3.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea64 distance T_x", \
-     "data/temperature_components_shift_vs_rounds_gauss_4.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea64 distance T_y", \
-     "data/temperature_components_shift_vs_rounds_gauss_5.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea64 distance T_z"
+set multiplot layout 1,3 title "Error rate of each temperature component against MT, |shift| with its 95 % CI (gauss; the paper's Fig. 4d)" noenhanced
+set title "T_x" noenhanced
+plot "temperature_components_shift_vs_rounds_gauss.csv" index 0 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32 distance", \
+     "temperature_components_shift_vs_rounds_gauss.csv" index 3 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64 distance"
+set title "T_y" noenhanced
+plot "temperature_components_shift_vs_rounds_gauss.csv" index 1 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32 distance", \
+     "temperature_components_shift_vs_rounds_gauss.csv" index 4 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64 distance"
+set title "T_z" noenhanced
+set key inside top right noenhanced opaque box samplen 2 spacing 1.1 font ',10'
+plot "temperature_components_shift_vs_rounds_gauss.csv" index 2 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32 distance", \
+     "temperature_components_shift_vs_rounds_gauss.csv" index 5 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64 distance"
+unset multiplot

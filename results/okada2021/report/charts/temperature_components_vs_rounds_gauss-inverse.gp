@@ -1,22 +1,28 @@
 # Kinetic temperature per component, replica mean ± 95 % CI (gauss-inverse; the paper's Fig. 4b)
-# Rendered by: gnuplot -e "set terminal svg; set output 'x.svg'" temperature_components_vs_rounds_gauss-inverse.gp
-set title "Kinetic temperature per component, replica mean ± 95 % CI (gauss-inverse; the paper's Fig. 4b)" noenhanced
-set xlabel "rounds"
-set ylabel "k_BT_α = Σv_α²/(N − 1) (k_BT units)"
-set grid
-set key outside right top noenhanced
-set datafile missing "nan"
+# Data: temperature_components_vs_rounds_gauss-inverse.csv (column 1 the series; one block per series)
+# Redraw: gnuplot -e "set terminal svg; set output 'temperature_components_vs_rounds_gauss-inverse.svg'" temperature_components_vs_rounds_gauss-inverse.gp
+# small multiples: 3 panels
+set xlabel "hash rounds [1]" noenhanced
 set logscale x 2
-set xrange [0.8:*]
-set arrow from graph 0, first 1.03544 to graph 1, first 1.03544 nohead dt 2 lw 1 lc rgb 'gray40'
-set label "mt19937 T_x" at graph 0.01, first 1.03544 offset 0,0.6 tc rgb 'gray40'
-set arrow from graph 0, first 1.03424 to graph 1, first 1.03424 nohead dt 2 lw 1 lc rgb 'gray40'
-set label "mt19937 T_y" at graph 0.31, first 1.03424 offset 0,0.6 tc rgb 'gray40'
-set arrow from graph 0, first 1.03465 to graph 1, first 1.03465 nohead dt 2 lw 1 lc rgb 'gray40'
-set label "mt19937 T_z" at graph 0.61, first 1.03465 offset 0,0.6 tc rgb 'gray40'
-plot "data/temperature_components_vs_rounds_gauss-inverse_0.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea32 distance T_x", \
-     "data/temperature_components_vs_rounds_gauss-inverse_1.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea32 distance T_y", \
-     "data/temperature_components_vs_rounds_gauss-inverse_2.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea32 distance T_z", \
-     "data/temperature_components_vs_rounds_gauss-inverse_3.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea64 distance T_x", \
-     "data/temperature_components_vs_rounds_gauss-inverse_4.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea64 distance T_y", \
-     "data/temperature_components_vs_rounds_gauss-inverse_5.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea64 distance T_z"
+set format x "%g"
+set offsets graph 0.03, graph 0.03, 0, 0
+set ylabel "k_BT_α = Σv_α²/(N − 1) [k_BT]" noenhanced
+set grid
+set datafile separator comma
+set datafile missing "nan"
+unset key
+set multiplot layout 1,3 title "Kinetic temperature per component, replica mean ± 95 % CI (gauss-inverse; the paper's Fig. 4b)" noenhanced
+set title "T_x" noenhanced
+plot "temperature_components_vs_rounds_gauss-inverse.csv" index 0 using 2:3 with lines dt 2 lw 2 lc rgb 'black' title "mt19937 (reference)", \
+     "temperature_components_vs_rounds_gauss-inverse.csv" index 3 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32 distance", \
+     "temperature_components_vs_rounds_gauss-inverse.csv" index 6 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64 distance"
+set title "T_y" noenhanced
+plot "temperature_components_vs_rounds_gauss-inverse.csv" index 1 using 2:3 with lines dt 2 lw 2 lc rgb 'black' title "mt19937 (reference)", \
+     "temperature_components_vs_rounds_gauss-inverse.csv" index 4 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32 distance", \
+     "temperature_components_vs_rounds_gauss-inverse.csv" index 7 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64 distance"
+set title "T_z" noenhanced
+set key inside top right noenhanced opaque box samplen 2 spacing 1.1 font ',10'
+plot "temperature_components_vs_rounds_gauss-inverse.csv" index 2 using 2:3 with lines dt 2 lw 2 lc rgb 'black' title "mt19937 (reference)", \
+     "temperature_components_vs_rounds_gauss-inverse.csv" index 5 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32 distance", \
+     "temperature_components_vs_rounds_gauss-inverse.csv" index 8 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64 distance"
+unset multiplot

@@ -1,13 +1,15 @@
 # Kinetic temperature against the step, replica mean (gauss-inverse)
-# Rendered by: gnuplot -e "set terminal svg; set output 'x.svg'" temperature_series_gauss-inverse.gp
-set title "Kinetic temperature against the step, replica mean (gauss-inverse)" noenhanced
-set xlabel "step"
-set ylabel "k_BT (kinetic)"
+# Data: temperature_series_gauss-inverse.csv (column 1 the series; one block per series)
+# Redraw: gnuplot -e "set terminal svg; set output 'temperature_series_gauss-inverse.svg'" temperature_series_gauss-inverse.gp
+set xlabel "step [1]" noenhanced
+set ylabel "kinetic temperature [k_BT]" noenhanced
 set grid
-set key outside right top noenhanced
+set datafile separator comma
 set datafile missing "nan"
-plot "data/temperature_series_gauss-inverse_0.dat" using 1:2 with lines lw 4 lc rgb 'black' title "mt19937 (reference, 16 replicas)", \
-     "data/temperature_series_gauss-inverse_1.dat" using 1:2 with lines lw 2 title "tea32(1) distance", \
-     "data/temperature_series_gauss-inverse_2.dat" using 1:2 with lines lw 2 dt 3 title "tea32(32) distance", \
-     "data/temperature_series_gauss-inverse_3.dat" using 1:2 with lines lw 2 title "tea64(1) distance", \
-     "data/temperature_series_gauss-inverse_4.dat" using 1:2 with lines lw 2 dt 3 title "tea64(32) distance"
+set key inside top right noenhanced opaque box samplen 2 spacing 1.1 font ',10'
+set title "Kinetic temperature against the step, replica mean (gauss-inverse)" noenhanced
+plot "temperature_series_gauss-inverse.csv" index 0 using 2:3 with lines lw 4 lc rgb 'black' title "mt19937 (reference, 16 replicas)", \
+     "temperature_series_gauss-inverse.csv" index 1 using 2:3 with lines lw 2 lc rgb '#0072B2' title "tea32(1) distance", \
+     "temperature_series_gauss-inverse.csv" index 2 using 2:3 with lines lw 2 lc rgb '#E69F00' title "tea64(1) distance", \
+     "temperature_series_gauss-inverse.csv" index 3 using 2:3 with lines lw 2 dt 3 lc rgb '#0072B2' title "tea32(32) distance", \
+     "temperature_series_gauss-inverse.csv" index 4 using 2:3 with lines lw 2 dt 3 lc rgb '#E69F00' title "tea64(32) distance"

@@ -1,15 +1,18 @@
 # Velocity PDF, pooled components (gauss)
-# Rendered by: gnuplot -e "set terminal svg; set output 'x.svg'" vpdf_gauss.gp
-set title "Velocity PDF, pooled components (gauss)" noenhanced
-set xlabel "v"
-set ylabel "P(v)"
+# Data: vpdf_gauss.csv (column 1 the series; one block per series)
+# Redraw: gnuplot -e "set terminal svg; set output 'vpdf_gauss.svg'" vpdf_gauss.gp
+set xlabel "velocity component v_α [√(k_BT/m)]" noenhanced
+set ylabel "probability density P(v_α) [√(m/k_BT)]" noenhanced
+set logscale y 10
+set format y "%g"
 set grid
-set key outside right top noenhanced
+set datafile separator comma
 set datafile missing "nan"
-set logscale y
-plot "data/vpdf_gauss_0.dat" using 1:2 with lines lw 4 lc rgb 'black' title "mt19937 (reference, 16 replicas)", \
-     "data/vpdf_gauss_1.dat" using 1:2 with lines dt 2 lw 2 lc rgb 'gray40' title "Maxwell–Boltzmann at k_BT", \
-     "data/vpdf_gauss_2.dat" using 1:2 with lines lw 2 title "tea32(1) distance", \
-     "data/vpdf_gauss_3.dat" using 1:2 with lines lw 2 dt 3 title "tea32(32) distance", \
-     "data/vpdf_gauss_4.dat" using 1:2 with lines lw 2 title "tea64(1) distance", \
-     "data/vpdf_gauss_5.dat" using 1:2 with lines lw 2 dt 3 title "tea64(32) distance"
+set key inside top right noenhanced opaque box samplen 2 spacing 1.1 font ',10'
+set title "Velocity PDF, pooled components (gauss)" noenhanced
+plot "vpdf_gauss.csv" index 0 using 2:3 with lines lw 4 lc rgb 'black' title "mt19937 (reference, 16 replicas)", \
+     "vpdf_gauss.csv" index 1 using 2:3 with lines dt 2 lw 2 lc rgb '#777777' title "Maxwell–Boltzmann at k_BT", \
+     "vpdf_gauss.csv" index 2 using 2:3 with lines lw 2 lc rgb '#0072B2' title "tea32(1) distance", \
+     "vpdf_gauss.csv" index 3 using 2:3 with lines lw 2 lc rgb '#E69F00' title "tea64(1) distance", \
+     "vpdf_gauss.csv" index 4 using 2:3 with lines lw 2 dt 3 lc rgb '#0072B2' title "tea32(32) distance", \
+     "vpdf_gauss.csv" index 5 using 2:3 with lines lw 2 dt 3 lc rgb '#E69F00' title "tea64(32) distance"

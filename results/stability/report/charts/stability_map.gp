@@ -1,37 +1,43 @@
-# Fraction of replicas stable against dt
-# Rendered by: gnuplot -e "set terminal svg; set output 'x.svg'" stability_map.gp
-set title "Fraction of replicas stable against dt" noenhanced
-set xlabel "dt"
-set ylabel "fraction stable"
+# Stability map: k_BT − 1 by Δt and integrator (cross: every replica blew up)
+# Data: stability_map.csv (column 1 the series; one block per series)
+# Redraw: gnuplot -e "set terminal svg; set output 'stability_map.svg'" stability_map.gp
+# small multiples: 5 panels
+set xlabel "time step Δt [τ]" noenhanced
+set logscale x 10
+set format x "%g"
+set offsets graph 0.03, graph 0.03, 0, 0
+set ylabel "integrator" noenhanced
+# y axis: categories
 set grid
-set key outside right top noenhanced
+set datafile separator comma
 set datafile missing "nan"
-set yrange [-0.05:1.05]
-set key outside right
-plot "data/stability_map_0.dat" using 1:2 with linespoints pt 1 lw 2 title "mvv:0.5 mt19937 gauss", \
-     "data/stability_map_1.dat" using 1:2 with linespoints pt 2 lw 2 title "mvv:0.5 tea32(1) gauss", \
-     "data/stability_map_2.dat" using 1:2 with linespoints pt 3 lw 2 title "mvv:0.5 mt19937 gauss-blocks", \
-     "data/stability_map_3.dat" using 1:2 with linespoints pt 4 lw 2 title "mvv:0.5 tea32(1) gauss-blocks", \
-     "data/stability_map_4.dat" using 1:2 with linespoints pt 5 lw 2 title "mvv:0.5 mt19937 gauss γ4.5", \
-     "data/stability_map_5.dat" using 1:2 with linespoints pt 6 lw 2 title "mvv:0.65 mt19937 gauss", \
-     "data/stability_map_6.dat" using 1:2 with linespoints pt 7 lw 2 title "mvv:0.65 tea32(1) gauss", \
-     "data/stability_map_7.dat" using 1:2 with linespoints pt 8 lw 2 title "mvv:0.65 mt19937 gauss-blocks", \
-     "data/stability_map_8.dat" using 1:2 with linespoints pt 9 lw 2 title "mvv:0.65 tea32(1) gauss-blocks", \
-     "data/stability_map_9.dat" using 1:2 with linespoints pt 10 lw 2 title "mvv:0.65 mt19937 gauss γ4.5", \
-     "data/stability_map_10.dat" using 1:2 with linespoints pt 11 lw 2 title "shardlow mt19937 gauss", \
-     "data/stability_map_11.dat" using 1:2 with linespoints pt 12 lw 2 title "shardlow tea32(1) gauss", \
-     "data/stability_map_12.dat" using 1:2 with linespoints pt 1 lw 2 title "shardlow mt19937 gauss-blocks", \
-     "data/stability_map_13.dat" using 1:2 with linespoints pt 2 lw 2 title "shardlow tea32(1) gauss-blocks", \
-     "data/stability_map_14.dat" using 1:2 with linespoints pt 3 lw 2 title "shardlow mt19937 gauss γ4.5", \
-     "data/stability_map_15.dat" using 1:2 with linespoints pt 4 lw 2 title "scmvv:1 mt19937 gauss", \
-     "data/stability_map_16.dat" using 1:2 with linespoints pt 5 lw 2 title "scmvv:1 tea32(1) gauss", \
-     "data/stability_map_17.dat" using 1:2 with linespoints pt 6 lw 2 title "scmvv:1 mt19937 gauss-blocks", \
-     "data/stability_map_18.dat" using 1:2 with linespoints pt 7 lw 2 title "scmvv:1 tea32(1) gauss-blocks", \
-     "data/stability_map_19.dat" using 1:2 with linespoints pt 8 lw 2 title "scmvv:1 mt19937 gauss γ4.5", \
-     "data/stability_map_20.dat" using 1:2 with linespoints pt 9 lw 2 title "scmvv:5 mt19937 gauss", \
-     "data/stability_map_21.dat" using 1:2 with linespoints pt 10 lw 2 title "scmvv:5 tea32(1) gauss", \
-     "data/stability_map_22.dat" using 1:2 with linespoints pt 11 lw 2 title "scmvv:5 mt19937 gauss-blocks", \
-     "data/stability_map_23.dat" using 1:2 with linespoints pt 12 lw 2 title "scmvv:5 tea32(1) gauss-blocks", \
-     "data/stability_map_24.dat" using 1:2 with linespoints pt 1 lw 2 title "scmvv:5 mt19937 gauss γ4.5", \
-     "data/stability_map_25.dat" using 1:2 with linespoints pt 2 lw 2 title "pnhln:10 mt19937 gauss", \
-     "data/stability_map_26.dat" using 1:2 with linespoints pt 3 lw 2 title "pnhln:10 mt19937 gauss γ4.5"
+unset key
+set cblabel "k_BT − 1 [% of k_BT]" noenhanced
+set cbrange [-5:5]
+set palette defined (-5 '#2166AC', 0 '#F7F7F7', 5 '#B2182B')
+set yrange [-0.5:5.5]
+max(a, b) = a > b ? a : b
+min(a, b) = a < b ? a : b
+set multiplot layout 2,3 title "Stability map: k_BT − 1 by Δt and integrator (cross: every replica blew up)" noenhanced
+set title "mt19937 gauss" noenhanced
+unset colorbox
+plot "stability_map.csv" index 0 using 2:3:(max(-5, min(5, $4))):ytic(6) with points pt 5 ps 1.4 palette title "error (colour)", \
+     "stability_map.csv" index 1 using 2:3:ytic(6) with points pt 2 ps 1.4 lw 2 lc rgb 'black' title "every replica blew up"
+set title "tea32(1) gauss" noenhanced
+unset colorbox
+plot "stability_map.csv" index 2 using 2:3:(max(-5, min(5, $4))):ytic(6) with points pt 5 ps 1.4 palette title "error (colour)", \
+     "stability_map.csv" index 3 using 2:3:ytic(6) with points pt 2 ps 1.4 lw 2 lc rgb 'black' title "every replica blew up"
+set title "mt19937 gauss-blocks" noenhanced
+unset colorbox
+plot "stability_map.csv" index 4 using 2:3:(max(-5, min(5, $4))):ytic(6) with points pt 5 ps 1.4 palette title "error (colour)", \
+     "stability_map.csv" index 5 using 2:3:ytic(6) with points pt 2 ps 1.4 lw 2 lc rgb 'black' title "every replica blew up"
+set title "tea32(1) gauss-blocks" noenhanced
+unset colorbox
+plot "stability_map.csv" index 6 using 2:3:(max(-5, min(5, $4))):ytic(6) with points pt 5 ps 1.4 palette title "error (colour)", \
+     "stability_map.csv" index 7 using 2:3:ytic(6) with points pt 2 ps 1.4 lw 2 lc rgb 'black' title "every replica blew up"
+set title "mt19937 gauss γ=4.5" noenhanced
+unset key
+set colorbox
+plot "stability_map.csv" index 8 using 2:3:(max(-5, min(5, $4))):ytic(6) with points pt 5 ps 1.4 palette title "error (colour)", \
+     "stability_map.csv" index 9 using 2:3:ytic(6) with points pt 2 ps 1.4 lw 2 lc rgb 'black' title "every replica blew up"
+unset multiplot
