@@ -240,6 +240,7 @@ void run_bench(const BenchArgs& a) {
   } catch (const std::regex_error&) {
     throw InputError("--filter: not a valid regular expression: " + a.filter);
   }
+  begin_work();
 
   const std::vector<Row> table = rows();
   std::vector<Case> cases;
