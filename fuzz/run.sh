@@ -4,10 +4,13 @@
 # committed seed (fuzz/corpus/<name>/, which holds every past finding), then searches. A crash, a sanitizer
 # report or a violated invariant fails the script and leaves the input in build/fuzz/run/artifacts/.
 # FUZZ_TARGETS="values nist" picks harnesses; the summary line per harness gives executions/s and coverage.
+# fuzz_argv runs whole command lines through `dpdrng --validate-only` (every subcommand; arguments separated by
+# NUL bytes in its corpus, fuzz/argv.dict written by build/fuzz/fuzz/make_argv_dict): exit 0 or 2 with one
+# printable line, no file created in its scratch directory under $DPDRNG_FUZZ_TMP.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 secs=${1:-60}
-names=${FUZZ_TARGETS:-"values bits nist study_config decomp_config cell_h5"}
+names=${FUZZ_TARGETS:-"values bits nist study_config decomp_config cell_h5 argv"}
 targets=()
 for n in $names; do targets+=("fuzz_$n"); done
 cmake --preset fuzz >/dev/null
@@ -25,7 +28,7 @@ for n in $names; do
   dict=()
   [[ -f fuzz/$n.dict ]] && dict=(-dict="fuzz/$n.dict")
   if ! nice -n 10 "build/fuzz/fuzz/fuzz_$n" "$work/corpus/$n" "${dict[@]}" -max_total_time="$secs" -timeout=10 \
-      -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$work/artifacts/$n-" >"$work/$n.log" 2>&1; then
+      -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$work/artifacts/$n-" >"$work/$n.log" 2>&1 </dev/null; then
     echo "fuzz_$n: FINDING (input in $work/artifacts/)" >&2
     tail -n 60 "$work/$n.log" >&2
     exit 1

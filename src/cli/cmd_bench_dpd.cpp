@@ -479,6 +479,7 @@ void run_bench_dpd(const BenchDpdArgs& a) {
   for (const auto& p : split(a.pairs)) dpd::parse_pair_mode(p);
   rng::check_feed(rng::parse_distribution(a.distribution), rng::parse_feed(a.feed));
   for (const auto& g : split(a.generators)) rng::find_generator(g);  // InputError for unknown names
+  begin_work();
 
   nlohmann::json out;
   out["context"] = {{"version", dpdrng::kVersion}, {"cpu_model", cpu_model()}, {"simd_width_bits", simd_width_bits()},

@@ -55,6 +55,8 @@ std::vector<nist::BitSequence> make_sequences(const BenchArgs& a) {
 void run_bench(const BenchArgs& a) {
   if (a.sequences < 1) throw InputError("--sequences must be positive");
   if (a.bits < 64 || a.bits % 64 != 0) throw InputError("--bits must be a positive multiple of 64");
+  a.gen.spec();  // a bad generator is refused before any sequence is made
+  begin_work();
   const auto seqs = make_sequences(a);
   nlohmann::json rows = nlohmann::json::array();
   double cpu_sum = 0;

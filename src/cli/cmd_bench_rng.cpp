@@ -22,6 +22,7 @@
 #include "dpdrng/cli/registry.hpp"
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/common/machine.hpp"
+#include "dpdrng/common/numbers.hpp"
 #include "dpdrng/rng/inverse_normal.hpp"
 #include "dpdrng/rng/mt.hpp"
 #include "dpdrng/rng/stream.hpp"
@@ -234,12 +235,18 @@ void run_bench(const BenchArgs& a) {
   if (!(a.min_time > 0)) throw InputError("--min-time must be positive (seconds)");
   if (a.repetitions < 1) throw InputError("--repetitions must be at least 1");
   if (a.buffer < 16 || a.buffer > (1u << 24)) throw InputError("--buffer must be 16..16777216 outputs");
+  // libstdc++ compiles a regular expression recursively: a long one overflows the stack. Row names are short.
+  constexpr std::size_t kMaxFilter = 256;
+  if (a.filter.size() > kMaxFilter)
+    throw InputError("--filter: " + quote_input(a.filter) + " is " + std::to_string(a.filter.size()) +
+                     " characters long; at most " + std::to_string(kMaxFilter));
   std::regex filter;
   try {
     filter = std::regex(a.filter);
   } catch (const std::regex_error&) {
-    throw InputError("--filter: not a valid regular expression: " + a.filter);
+    throw InputError("--filter: not a valid regular expression: " + quote_input(a.filter));
   }
+  begin_work();
 
   const std::vector<Row> table = rows();
   std::vector<Case> cases;

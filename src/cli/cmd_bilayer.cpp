@@ -99,6 +99,7 @@ void run_bilayer_scene(const dpd::BilayerConfig& in, bool json, bool quiet, cons
   dpd::BilayerConfig cfg = in;
   cfg.series = !series_dir.empty();
   cfg.validate();
+  begin_work();
   if (cfg.series) prepare_output_files(series_dir, {"profile.csv", "series.csv", "order.csv"}, "--series");
   dpd::RunHooks hooks;
   if (!quiet && cfg.steps >= 2000)

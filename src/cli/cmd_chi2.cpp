@@ -81,6 +81,7 @@ void run_chunked(const Chi2Args& a, const std::vector<double>& x, const stats::C
 
 void run_chi2(const Chi2Args& a) {
   const stats::Chi2Options opt{parse_bins(a.bins), a.in.alpha};
+  begin_work();
   const std::vector<double> x = a.in.read();
   if (a.chunks.per > 0) return run_chunked(a, x, opt);
   const auto r = stats::chi2_uniform(x, opt);

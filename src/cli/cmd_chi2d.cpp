@@ -17,13 +17,14 @@ struct Chi2dArgs {
 };
 
 void pairs_of(const Chi2dArgs& a, std::vector<double>& u1, std::vector<double>& u2) {
-  const auto format = stats::parse_input_format(a.in.format);
-  if (format == stats::InputFormat::u64) {
-    const auto how = stats::parse_word_pairing(a.pairs.empty() ? "halves" : a.pairs);
+  const bool words = stats::parse_input_format(a.in.format) == stats::InputFormat::u64;
+  if (!words && a.pairs == "halves") throw InputError("--pairs halves needs --format u64 (the 32-bit halves of words)");
+  const auto how = stats::parse_word_pairing(a.pairs.empty() ? "halves" : a.pairs);
+  begin_work();
+  if (words) {
     stats::pair_words(stats::read_words(a.in.input), how, u1, u2);
     return;
   }
-  if (a.pairs == "halves") throw InputError("--pairs halves needs --format u64 (the 32-bit halves of words)");
   const auto x = a.in.read();
   for (std::size_t i = 0; i + 1 < x.size(); i += 2) {
     u1.push_back(x[i]);

@@ -25,11 +25,22 @@ std::vector<std::size_t> positive_list(const std::string& text, const std::strin
   return parse_list<std::size_t>(text, what, {1, std::numeric_limits<std::size_t>::max()});
 }
 
-std::vector<stats::CorrelationResult> run_checks(const CorrArgs& a, const std::vector<double>& x) {
-  const auto lags = positive_list(a.lags, "--lags");
+// The lags and offsets to test, checked before the input is read.
+struct CorrPlan {
+  std::vector<std::size_t> lags, offsets;
+};
+
+CorrPlan plan_of(const CorrArgs& a) {
+  CorrPlan plan{positive_list(a.lags, "--lags"), {}};
+  if (a.pairs == 0 && a.offsets_given) throw InputError("--offsets needs --pairs: a plain stream has no pairs");
+  if (a.pairs != 0) plan.offsets = positive_list(a.offsets, "--offsets");
+  return plan;
+}
+
+std::vector<stats::CorrelationResult> run_checks(const CorrArgs& a, const CorrPlan& plan, const std::vector<double>& x) {
+  const auto& lags = plan.lags;
   std::vector<stats::CorrelationResult> out;
   if (a.pairs == 0) {
-    if (a.offsets_given) throw InputError("--offsets needs --pairs: a plain stream has no pairs");
     // A stream is one "pair" followed over time.
     const auto m = stats::NoiseMatrix::pair_major(x, 1, x.size());
     for (const std::size_t lag : lags) {
@@ -43,7 +54,7 @@ std::vector<stats::CorrelationResult> run_checks(const CorrArgs& a, const std::v
   const std::size_t steps = x.size() / a.pairs;
   const auto m = a.layout == "pair-major" ? stats::NoiseMatrix::pair_major(x, a.pairs, steps)
                                           : stats::NoiseMatrix::step_major(x, a.pairs, steps);
-  for (const std::size_t off : positive_list(a.offsets, "--offsets"))
+  for (const std::size_t off : plan.offsets)
     out.push_back(stats::cross_pair_correlation(m, off, a.in.alpha));
   for (const std::size_t lag : lags) out.push_back(stats::across_time_correlation(m, lag, a.in.alpha));
   return out;
@@ -66,8 +77,10 @@ void print_table(const std::vector<stats::CorrelationResult>& rs, std::size_t n,
 }
 
 void run_corr(const CorrArgs& a) {
+  const CorrPlan plan = plan_of(a);
+  begin_work();
   const std::vector<double> x = a.in.read();
-  const auto results = run_checks(a, x);
+  const auto results = run_checks(a, plan, x);
   if (a.in.json) {
     nlohmann::json checks = nlohmann::json::array();
     for (const auto& c : results) checks.push_back(correlation_json(c));

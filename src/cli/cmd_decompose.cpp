@@ -88,6 +88,7 @@ void run_study(const DecomposeArgs& a) {
   study::DecompRunOptions o;
   o.shard = study::parse_shard(a.shard);
   o.progress = a.quiet ? nullptr : &std::cerr;
+  begin_work();
   study::DecompStore store(a.out);
   prepare_output_directory(store.dir(), "--out");
   store.open_for(sw);
@@ -128,6 +129,8 @@ void run_decompose(DecomposeArgs& a) {
   cfg.noise.distribution = rng::parse_distribution(a.distribution);
   cfg.noise.feed = rng::parse_feed(a.feed);
   cfg.reference = !a.no_reference;
+  cfg.validate();
+  begin_work();
   const study::DecompResult r = study::run_decomposition(cfg);
   if (a.json)
     std::cout << study::to_json(r).dump(2) << "\n";

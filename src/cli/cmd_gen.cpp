@@ -49,11 +49,12 @@ void run_gen(const GenArgs& a) {
                      ": the counter would pass 2^64 - 1 and wrap to 0");
   const bool raw = a.format == "raw";
   if (raw && isatty(STDOUT_FILENO)) throw InputError("refusing to write raw binary to a terminal; pipe or redirect it");
-  std::signal(SIGPIPE, SIG_IGN);
   const std::uint64_t per_call = rng::words_per_call(spec);
   if (a.count > std::numeric_limits<std::uint64_t>::max() / per_call)
     throw InputError("--count " + std::to_string(a.count) + ": " + spec.name + " writes " + std::to_string(per_call) +
                      " words a call, more than 2^64 - 1 words in all");
+  begin_work();
+  std::signal(SIGPIPE, SIG_IGN);
   const std::uint64_t total = a.count * per_call;
   std::vector<std::uint64_t> buf(std::size_t{1} << 16);
   std::string text;

@@ -16,6 +16,7 @@ struct GofArgs {
 
 void run_gof(const GofArgs& a) {
   const auto target = stats::parse_fit_target(a.target);
+  begin_work();
   const auto x = a.in.read();
   const auto r = stats::anderson_darling(x, target, a.in.alpha);
   if (a.in.json) {

@@ -20,6 +20,7 @@ std::string rounds_text(const rng::GeneratorInfo& g) {
 }
 
 void run_list(bool json) {
+  begin_work();
   if (json) {
     nlohmann::json out = nlohmann::json::array();
     for (const auto& g : rng::generator_table()) {

@@ -19,6 +19,7 @@ struct MomentsArgs {
 nlohmann::json interval(const stats::Interval& i) { return {number(i.low), number(i.high)}; }
 
 void run_moments(const MomentsArgs& a) {
+  begin_work();
   const auto x = a.in.read();
   const auto r = stats::moments(x, a.confidence, a.target);
   const bool ok = r.second_moment_p >= a.in.alpha;

@@ -169,6 +169,7 @@ void run_nist(const NistArgs& a) {
     std::replace(field.begin(), field.end(), '_', '-');
     return "--" + field;
   });
+  begin_work();
   const auto seqs = a.in.load();
   const auto results = nist::run_battery(seqs, a.p, tests);
   print_nist(a.in, results, parameters_json(a.p));

@@ -65,6 +65,7 @@ void run(TestArgs& a) {
     for (const auto& b : a.templates) a.p.non_overlapping_templates.push_back(parse_template(b, a.p.non_overlapping_m));
   }
   check_nist_parameters({a.test}, a.p, flag_of);
+  begin_work();
   const auto seqs = a.in.load();
   std::vector<std::vector<nist::TestResult>> results(seqs.size());
   const long count = static_cast<long>(seqs.size());

@@ -166,6 +166,7 @@ void run_simulate(SimulateArgs& a, const CLI::App& sub) {
   cfg.validate();
   std::optional<dpd::WaterConfig> reference;
   if (!a.compare.empty()) reference = reference_config(cfg, a.compare);
+  begin_work();
   if (cfg.series)
     prepare_output_files(a.run.series_dir, {"series.csv", "velocity_pdf.csv", "msd.csv", "rdf.csv"}, "--series");
   dpd::RunHooks hooks;

@@ -36,6 +36,7 @@ void run(const RunArgs& a) {
   o.shard = parse_shard(a.shard);
   o.threads = a.threads > 0 ? a.threads : std::max(1u, std::thread::hardware_concurrency());
   o.progress = &std::cerr;
+  begin_work();
   Store store(a.out.empty() ? fs::path("results") / config.name : fs::path(a.out));
   prepare_output_directory(store.dir(), "--out");
   store.open_for(config);
@@ -52,6 +53,7 @@ void run(const RunArgs& a) {
 
 void merge(const std::vector<std::string>& dirs, const std::string& out_dir) {
   if (dirs.empty()) throw InputError("study merge: give at least one study directory");
+  begin_work();
   Store first(dirs.front());
   const StudyConfig config = first.stored_config();
   Store out(out_dir.empty() ? fs::path(dirs.front()) : fs::path(out_dir));
@@ -132,6 +134,7 @@ void calibrate_cmd(const CalibrateArgs& a) {
   // Every input checked before anything is written.
   const StudyConfig pool = plan.at_size ? at_size_pool(config, plan) : calibration_pool(config, plan);
   validate_scene(pool);
+  begin_work();
   const fs::path out(a.out);
   prepare_output_directory(out, "--out");
   Store store(out / "pool");
@@ -153,6 +156,7 @@ void calibrate_cmd(const CalibrateArgs& a) {
 }
 
 void report(const std::string& dir, bool charts, const std::string& calibration) {
+  begin_work();
   Store store(dir);
   const StudyConfig config = store.stored_config();
   prepare_output_directory(store.dir() / "report", "study report: the report directory");
@@ -248,7 +252,9 @@ const bool registered = register_command(60, [](CLI::App& root) {
   c->add_option("--shard", *shard, "k/N")->capture_default_str();
   c->callback([cfg, shard] {
     const StudyConfig config = load_config(*cfg);
-    for (const auto& cell : select_shard(enumerate_cells(config), parse_shard(*shard)))
+    const Shard part = parse_shard(*shard);
+    begin_work();
+    for (const auto& cell : select_shard(enumerate_cells(config), part))
       std::cout << cell.id() << (cell.nist ? "  [nist]" : "") << "\n";
   });
 });

@@ -64,6 +64,7 @@ void run_chunked(const TtestArgs& a, const std::vector<double>& x) {
 }
 
 void run_ttest(const TtestArgs& a) {
+  begin_work();
   const std::vector<double> x = a.in.read();
   if (a.chunks.per > 0) return run_chunked(a, x);
   const auto r = stats::lag1_ttest(x, a.in.alpha);

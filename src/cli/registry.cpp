@@ -17,6 +17,17 @@ bool register_command(int order, Attach attach) {
   return true;
 }
 
+namespace {
+bool validating = false;
+}  // namespace
+
+void set_validate_only(bool on) { validating = on; }
+bool validate_only() { return validating; }
+
+void begin_work() {
+  if (validating) throw ArgumentsValid{};
+}
+
 CLI::App& group(CLI::App& root, const std::string& name, const std::string& description) {
   for (CLI::App* sub : root.get_subcommands([](CLI::App*) { return true; }))
     if (sub->get_name() == name) return *sub;

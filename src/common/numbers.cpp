@@ -99,22 +99,17 @@ std::size_t utf8_length(std::string_view s, std::size_t i) {
   return len;
 }
 
-}  // namespace
-
-std::string quote_input(std::string_view text) {
-  constexpr std::size_t kMax = 24;
-  const std::string_view head = text.substr(0, kMax);
-  // Control characters, NUL, quotes and bytes that are not UTF-8 are shown as \xNN: a message stays one line of
-  // text, whatever was typed or read.
-  std::string s = "'";
-  for (std::size_t i = 0; i < head.size();) {
-    const auto b = static_cast<unsigned char>(head[i]);
-    if (b >= 0x20 && b < 0x7f && b != '\'' && b != '\\') {
-      s += head[i++];
+// Control characters, NUL and bytes that are not UTF-8 (and, with `quotes`, quotes and backslashes) as \xNN.
+std::string escaped(std::string_view text, bool quotes) {
+  std::string s;
+  for (std::size_t i = 0; i < text.size();) {
+    const auto b = static_cast<unsigned char>(text[i]);
+    if (b >= 0x20 && b < 0x7f && !(quotes && (b == '\'' || b == '\\'))) {
+      s += text[i++];
       continue;
     }
-    if (const std::size_t len = b >= 0x80 ? utf8_length(head, i) : 0) {
-      s.append(head.substr(i, len));
+    if (const std::size_t len = b >= 0x80 ? utf8_length(text, i) : 0) {
+      s.append(text.substr(i, len));
       i += len;
       continue;
     }
@@ -123,8 +118,21 @@ std::string quote_input(std::string_view text) {
     s += esc;
     ++i;
   }
-  return s + (text.size() > kMax ? "...'" : "'");
+  return s;
 }
+
+}  // namespace
+
+std::string quote_input(std::string_view text) {
+  constexpr std::size_t kMax = 24;
+  // A message stays one line of text, whatever was typed or read.
+  std::string s = "'";
+  s += escaped(text.substr(0, kMax), true);
+  s += text.size() > kMax ? "...'" : "'";
+  return s;
+}
+
+std::string printable(std::string_view message) { return escaped(message, false); }
 
 std::string check_integer(std::string_view text, const IntRange& range, std::int64_t& out) {
   IntRange r = range;

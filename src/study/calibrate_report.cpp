@@ -92,7 +92,10 @@ void false_alarm_section(const Calibration& c, std::ostream& md) {
       const double e = (double(i) + 0.5) / m;
       above += p[i] > e + eps, below += p[i] < e - eps;
     }
-    const auto at = [&](double q) { return detail::num(p[std::min(p.size() - 1, std::size_t(q * m))]); };
+    // By reference to the vector, not to the binding: clang before 16 cannot capture a structured binding.
+    const auto at = [&sorted = p, m](double q) {
+      return detail::num(sorted[std::min(sorted.size() - 1, std::size_t(q * m))]);
+    };
     md << "Null P-values (`null_p_qq.csv`, `charts/null_p_qq.png`): the " << p.size()
        << " raw two-sided P-values of every test of every good-generator variant at " << n.replicas
        << " replicas against the uniform distribution, with the simultaneous 95 % band of the "

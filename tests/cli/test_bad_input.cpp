@@ -350,6 +350,16 @@ TEST(BadInput, DecomposeTestsKeysNamed) {
   EXPECT_FALSE(fs::exists(scratch(".out")));
 }
 
+// libstdc++ compiles a regular expression recursively: a pattern this long would overflow its stack (SIGSEGV). A
+// refused pattern is quoted shortened, not echoed whole.
+TEST(BadInput, BenchRngFilterTooLongOrInvalid) {
+  expect_bad("bench rng --filter " + std::string(100000, 'a'), "at most 256");
+  const Result r = run("bench rng --filter '" + std::string(200, '(') + "'");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("not a valid regular expression: '((((("), std::string::npos) << r.err;
+  EXPECT_LT(r.err.size(), 200u) << r.err;
+}
+
 TEST(BadInput, DirectoryGivenAsInput) {
   const std::string dir = ::testing::TempDir();
   expect_bad("nist -i " + dir, "is a directory, not an input file");

@@ -15,7 +15,7 @@ namespace dpdrng::cli {
 inline constexpr std::uint64_t kIntMax = static_cast<std::uint64_t>(std::numeric_limits<int>::max());
 inline constexpr std::uint64_t kInt64Max = static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max());
 
-// The transforms carry this name; require_checked_numbers() (run by main before parsing) refuses to start when
+// The transforms carry this name; require_checked_numbers() (run by make_app before parsing) refuses to start when
 // a numeric option lacks one, so no option can slip past the parser.
 inline constexpr const char* kCheckedNumber = "checked-number";
 CLI::Validator checked_integer(const IntRange& range, bool is_signed);

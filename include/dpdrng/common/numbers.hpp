@@ -36,6 +36,9 @@ std::string format_g(double x);
 
 // The text, shortened for a message (a pasted megabyte stays a line).
 std::string quote_input(std::string_view text);  // control bytes, quotes and non-UTF-8 as \xNN
+// A whole message as it is printed: control bytes (newlines too) and non-UTF-8 as \xNN, so that whatever a
+// message echoes from the command line or a file, it stays one line of text.
+std::string printable(std::string_view message);
 
 // On success writes the value and returns ""; otherwise returns the problem and leaves the output alone.
 std::string check_integer(std::string_view text, const IntRange& range, std::int64_t& out);
