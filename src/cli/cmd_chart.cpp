@@ -20,6 +20,7 @@ const bool registered = register_command(64, [](CLI::App& root) {
               "and NAME.svg / NAME.png (drawn by gnuplot). Edit a script and rerun to restyle a chart.\n"
               "The rules every chart follows: docs/charts.md.");
   sub->callback([dir] {
+    begin_work();
     const std::size_t n = study::redraw_charts(*dir, &std::cerr);
     std::cout << n << " charts drawn under " << *dir << "\n";
   });

@@ -4,9 +4,11 @@
 #include <cmath>
 #include <map>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
+#include "dpdrng/common/error.hpp"
 #include "dpdrng/common/output.hpp"
 #include "dpdrng/study/calibrate.hpp"
 #include "report_chart.hpp"
@@ -230,29 +232,39 @@ std::string power_csv(const Calibration& c) {
   return o.str();
 }
 
+// Detection probability against defect size, one panel per defect kind (small multiples), a line per replica
+// count, with 95 % CIs; 50 % and 90 % as levels.
 void power_chart(const Calibration& c, const fs::path& dir, bool run, std::ostream* log) {
-  const std::string kind = c.power.empty() ? "" : c.power.front().kind;
+  std::vector<std::string> kinds;
+  for (const auto& p : c.power)
+    if (p.size > 0 && std::find(kinds.begin(), kinds.end(), p.kind) == kinds.end()) kinds.push_back(p.kind);
+  if (kinds.empty()) return;
   detail::Chart ch;
   ch.name = "power";
-  ch.title = "Detection probability of a " + kind + " defect (" + c.config_name + ", α = " + detail::num(c.alpha) + ")";
-  ch.x = detail::Axis{kind_what(kind), "1", detail::Scale::log10};
+  ch.title = "Detection probability against defect size (" + c.config_name + ", α = " + detail::num(c.alpha) + ")";
+  // One x label for every panel: each panel's title names its defect and its symbol.
+  ch.x = detail::Axis{"defect size", "1", detail::Scale::log10};
   ch.y = detail::Axis{"P(verdict \"differs\"), 95 % CI", "1"};
   ch.columns = {"size", "power", "ci_low", "ci_high"};
-  ch.key = "inside top left";
-  ch.extra = "set yrange [0:1.05]\n" + detail::hline(0.5, "50 %", "#555555") + detail::hline(0.9, "90 %", "#555555");
-  double lo = INFINITY, hi = -INFINITY;
-  std::map<int, detail::Line> lines;
-  for (const auto& p : c.power) {
-    if (p.kind != kind || p.size <= 0) continue;
-    detail::Line& l = lines[p.replicas];
-    l.title = std::to_string(p.replicas) + " replicas";
-    l.style = "using 2:3:4:5 with yerrorlines lw 2 pt " + std::to_string(detail::rounds_point(int(lines.size())));
-    l.rows.push_back({p.size, p.detected.rate, p.detected.low, p.detected.high});
-    lo = std::min(lo, p.size), hi = std::max(hi, p.size);
+  ch.key = "inside bottom right";
+  ch.extra = "set yrange [0:1.05]\nset offsets graph 0.1, graph 0.1, 0, 0\n" + detail::hline(0.5, "", "#555555") +
+             detail::hline(0.9, "", "#555555");
+  if (kinds.size() > 1)
+    for (const auto& k : kinds) ch.panels.push_back(kind_what(k));
+  else
+    ch.title += ": " + std::string(kind_what(kinds.front()));
+  for (std::size_t panel = 0; panel < kinds.size(); ++panel) {
+    std::map<int, detail::Line> lines;
+    for (const auto& p : c.power) {
+      if (p.kind != kinds[panel] || p.size <= 0) continue;
+      detail::Line& l = lines[p.replicas];
+      l.title = std::to_string(p.replicas) + " replicas";
+      l.panel = panel;
+      l.style = "using 2:3:4:5 with yerrorlines lw 2 pt 7 lc " + std::to_string(lines.size());
+      l.rows.push_back({p.size, p.detected.rate, p.detected.low, p.detected.high});
+    }
+    for (auto& [r, l] : lines) ch.lines.push_back(l);
   }
-  for (auto& [r, l] : lines) ch.lines.push_back(l);
-  if (ch.lines.empty()) return;
-  ch.extra += "set xrange [" + detail::num(lo / 1.25) + ":" + detail::num(hi * 1.25) + "]\n";
   detail::render(ch, dir, run, log);
 }
 
@@ -389,10 +401,55 @@ void write_calibration(const Calibration& c, const fs::path& dir, bool charts, s
   if (!charts) return;
   const bool run = detail::has_gnuplot();
   if (!run && log) *log << "[calibrate] gnuplot not found: chart scripts written, not rendered\n";
+  write_calibration_charts(c, dir, run, log);
+}
+
+void write_calibration_charts(const Calibration& c, const fs::path& dir, bool run, std::ostream* log) {
   detail::fresh_chart_directory(dir / "charts");
   power_chart(c, dir / "charts", run, log);
   false_alarm_chart(c, dir / "charts", run, log);
   null_qq_chart(c, dir / "charts", run, log);
+}
+
+Calibration read_calibration_tables(const fs::path& dir) {
+  std::ifstream in(dir / "calibration.json");
+  if (!in) throw InputError("chart: " + (dir / "calibration.json").string() + " cannot be read");
+  Calibration c;
+  try {
+    const nlohmann::json j = nlohmann::json::parse(in);
+    c.config_name = j.at("config").get<std::string>();
+    c.alpha = j.at("alpha").get<double>();
+    c.config_replicas = j.at("config_replicas").get<int>();
+    c.at_size = j.value("at_size", false);
+    for (const auto& n : j.at("false_alarms"))
+      c.nulls.push_back({n.at("replicas").get<int>(), rate_from(n.at("verdicts")), rate_from(n.at("studies")), {},
+                         n.value("tests_per_study", std::size_t(0))});
+    for (const auto& p : j.at("power"))
+      c.power.push_back({p.at("kind").get<std::string>(), p.at("size").get<double>(), p.at("replicas").get<int>(),
+                         rate_from(p.at("detected")),
+                         p.at("temperature_error").is_number() ? p.at("temperature_error").get<double>() : NAN});
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError("chart: " + (dir / "calibration.json").string() + ": " + e.what());
+  }
+  // The QQ plot's P-values: the observed column of null_p_qq.csv, which holds the config's replica count's.
+  std::ifstream qq(dir / "null_p_qq.csv");
+  std::string line;
+  std::getline(qq, line);
+  for (auto& n : c.nulls)
+    if (n.replicas == c.config_replicas)
+      while (std::getline(qq, line)) {
+        std::istringstream fields(line);
+        std::string rank, expected, observed;
+        std::getline(fields, rank, ',');
+        std::getline(fields, expected, ',');
+        std::getline(fields, observed, ',');
+        char* end = nullptr;
+        const double p = std::strtod(observed.c_str(), &end);
+        if (observed.empty() || *end != '\0')
+          throw InputError("chart: " + (dir / "null_p_qq.csv").string() + ": not a P-value: '" + observed + "'");
+        n.p_values.push_back(p);
+      }
+  return c;
 }
 
 namespace {

@@ -9,6 +9,7 @@
 
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/common/output.hpp"
+#include "dpdrng/study/calibrate.hpp"
 #include "dpdrng/study/report.hpp"
 #include "report_chart.hpp"
 #include "report_common.hpp"
@@ -171,6 +172,13 @@ namespace dpdrng::study {
 std::size_t redraw_charts(const fs::path& dir, std::ostream* log) {
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) throw InputError("chart: " + dir.string() + " is not a directory");
+  // A calibration whose charts have no CSV yet (drawn before the chart rules) gets them from its tables.
+  std::vector<fs::path> calibrations;
+  for (const auto& e : fs::recursive_directory_iterator(dir, ec))
+    if (e.is_regular_file() && e.path().filename() == "calibration.json" &&
+        !fs::exists(e.path().parent_path() / "charts" / "false_alarms.csv"))
+      calibrations.push_back(e.path().parent_path());
+  for (const auto& c : calibrations) write_calibration_charts(read_calibration_tables(c), c, false, log);
   std::vector<fs::path> scripts;
   for (const auto& e : fs::recursive_directory_iterator(dir, ec))
     if (e.is_regular_file() && e.path().extension() == ".gp" &&

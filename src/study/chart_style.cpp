@@ -20,15 +20,15 @@ std::string family_colour(const std::string& generator) {
 }
 
 // gnuplot's point types, one per round count a study sweeps: filled circle, square, triangle, diamond, inverted
-// triangle, pentagon for 1–6 rounds; open circle, square, triangle, diamond for 8, 16, 32, 64; an open pentagon
-// for any other count, a cross for a generator without rounds.
+// triangle, pentagon for 1–6 rounds; open inverted triangle, circle, pentagon, asterisk, square, plus, triangle,
+// diamond for 7, 8, 10, 13, 16, 20, 32, 64 (the safe counts of TEA, Philox and Threefry among them); a cross for
+// any other count and for a generator without rounds.
 int rounds_point(int rounds) {
-  if (rounds <= 0) return 2;
-  static const std::pair<int, int> points[] = {{1, 7}, {2, 5},  {3, 9},  {4, 13}, {5, 11},
-                                               {6, 15}, {8, 6}, {16, 4}, {32, 8}, {64, 12}};
+  static const std::pair<int, int> points[] = {{1, 7},  {2, 5},  {3, 9}, {4, 13}, {5, 11}, {6, 15}, {7, 10},
+                                               {8, 6},  {10, 14}, {13, 3}, {16, 4}, {20, 1}, {32, 8}, {64, 12}};
   for (const auto& [r, pt] : points)
     if (r == rounds) return pt;
-  return 14;
+  return 2;
 }
 
 std::string colour_style(const std::string& generator) { return "lc rgb '" + family_colour(generator) + "'"; }

@@ -79,26 +79,55 @@ void fit_shift_axis(Chart& c, double margin, std::vector<Line*> data) {
         limit = std::max({limit, std::abs(r[1]), std::isfinite(r[2]) ? std::abs(r[2]) : 0.0,
                           std::isfinite(r[3]) ? std::abs(r[3]) : 0.0});
   limit *= 1.15;
-  Line off{"", "using 2:3:(column(7) > 0 ? 9 : 11) with points pt variable ps 1.6 lc rgb '#333333'", {}, {}};
-  Line names{"", "using 2:3:8 with labels offset 1,0 left font ',10' tc rgb '#333333'", {}, {}};
-  std::size_t named = 0;  // the names stack inward from the edge, one line each, so that none overlaps
+  std::map<std::size_t, std::pair<Line, Line>> beyond;  // per panel: the triangles and their names
+  std::map<std::size_t, std::size_t> named;             // the names stack inward from the edge, one line each
   for (Line* l : data)
     for (std::size_t k = 0; k < l->rows.size(); ++k) {
       auto& r = l->rows[k];
       if (std::abs(r[1]) <= limit) continue;
       const double edge = std::copysign(0.94 * limit, r[1]);
-      const double at = edge - std::copysign(0.08 * limit * double(named++), r[1]);
+      const double at = edge - std::copysign(0.08 * limit * double(named[l->panel]++), r[1]);
       const std::string who = k < l->labels.size() ? l->labels[k] + " " : "";
+      auto& [off, names] = beyond[l->panel];
+      off = Line{"", "using 2:3:(column(7) > 0 ? 9 : 11) with points pt variable ps 1.6 lc rgb '#333333'",
+                 std::move(off.rows), {}, l->panel};
+      names = Line{"", "using 2:3:8 with labels offset 1,0 left font ',10' tc rgb '#333333'", std::move(names.rows),
+                   std::move(names.labels), l->panel};
       off.rows.push_back({r[0], edge, NAN, NAN, NAN, r[1]});
       names.rows.push_back({r[0], at, NAN, NAN, NAN, r[1]});
       names.labels.push_back(who + detail::fmt("%+.0f %%", r[1]));
       r[1] = r[2] = r[3] = NAN;
     }
   c.extra += "set yrange [" + detail::num(-limit) + ":" + detail::num(limit) + "]\n";
-  if (!off.rows.empty()) {
-    c.lines.push_back(std::move(off));
-    c.lines.push_back(std::move(names));
+  for (auto& [panel, lines] : beyond) {
+    c.lines.push_back(std::move(lines.first));
+    c.lines.push_back(std::move(lines.second));
   }
+}
+
+// The seedings of a noise's variants, in order: one panel each when there are several (each generator's lines
+// of one seeding stay within six series).
+std::vector<std::string> seeding_panels(const Analysis& a, const std::string& dist) {
+  std::vector<std::string> s;
+  for (const auto& v : a.variants)
+    if (!v.key.reference && v.key.noise() == dist &&
+        std::find(s.begin(), s.end(), v.key.seeding_name()) == s.end())
+      s.push_back(v.key.seeding_name());
+  if (s.size() < 2) return {};
+  for (auto& name : s) name += " seeding";
+  return s;
+}
+
+std::size_t panel_of(const std::vector<std::string>& panels, const VariantKey& k) {
+  for (std::size_t p = 0; p < panels.size(); ++p)
+    if (panels[p] == k.seeding_name() + " seeding") return p;
+  return 0;
+}
+
+// A family's line in the family's colour, in its seeding's panel (titled by the generator alone there).
+Line family_line(const Chart& c, const std::string& family, const VariantReport& first, const std::string& style) {
+  return Line{c.panels.empty() ? family : first.key.generator, style + " " + detail::colour_style(first.key.generator),
+              {}, {}, panel_of(c.panels, first.key)};
 }
 const Axis kRoundsAxis{"hash rounds", "1", Scale::log2};
 
@@ -109,8 +138,9 @@ Chart temperature_shift(const Analysis& a, const std::string& dist) {
   c.columns.front() = "rounds";
   const double margin = 100 * temperature_margin(a);
   c.extra = detail::margin_band(margin, "equivalence margin");
+  c.panels = seeding_panels(a, dist);
   for (const auto& [fam, vs] : families(a, dist)) {
-    Line l{fam, "using 2:3:4:5 with yerrorlines lw 2 pt 7 " + detail::colour_style(vs.front()->key.generator), {}, {}};
+    Line l = family_line(c, fam, *vs.front(), "using 2:3:4:5 with yerrorlines lw 2 pt 7");
     for (const auto* v : vs)
       if (const auto* t = temperature(*v)) {
         l.rows.push_back({double(v->key.rounds), 100 * t->shift, 100 * t->ci_low, 100 * t->ci_high});
@@ -152,8 +182,9 @@ Chart speed_accuracy(const Analysis& a, const std::string& dist) {
   const VariantReport* ref = reference(a, dist);
   const std::string cpu = ref ? cpu_of(*ref) : "";
   Chart c{"speed_vs_accuracy_" + dist,
-          "Cost against temperature shift (" + dist + (cpu.empty() ? "" : "; " + cpu) + ")",
-          Axis{"cost per random number (best of 5 × 4096 calls in the run)", "ns", Scale::log2}, kShiftAxis,
+          "Cost (best of 5 × 4096 calls in the run) against temperature shift (" + dist +
+              (cpu.empty() ? "" : "; " + cpu) + ")",
+          Axis{"cost per random number", "ns", Scale::log2}, kShiftAxis,
           kShiftColumns};
   c.columns.front() = "ns_per_number";
   const double margin = 100 * temperature_margin(a);
@@ -163,12 +194,15 @@ Chart speed_accuracy(const Analysis& a, const std::string& dist) {
                detail::num(ref->ns_per_number) + ", graph 1 nohead dt 2 lc rgb 'black'\nset label " +
                detail::q(ref->key.label()) + " at first " + detail::num(ref->ns_per_number) +
                ", graph 0.96 offset 0.5,0 font ',10'\n";
-  std::vector<std::vector<double>> all;
+  c.panels = seeding_panels(a, dist);
+  const std::size_t panels = std::max<std::size_t>(c.panels.size(), 1);
+  std::vector<std::vector<std::vector<double>>> all(panels);
   std::vector<int> rounds;
-  Line named{"", "using 2:3:8 with labels offset 0.8,0.6 left font ',10' tc rgb '#333333'", {}, {}};
+  std::vector<Line> named(panels);
+  double lo = ref && ref->ns_per_number > 0 ? ref->ns_per_number : INFINITY, hi = lo > 0 && std::isfinite(lo) ? lo : 0;
   for (const auto& [fam, vs] : families(a, dist)) {
-    Line l{fam, "using 2:3:4:5:6 with yerrorbars pt variable ps 1.3 lw 1.5 " +
-                    detail::colour_style(vs.front()->key.generator), {}, {}};
+    const std::size_t panel = panel_of(c.panels, vs.front()->key);
+    Line l = family_line(c, fam, *vs.front(), "using 2:3:4:5:6 with yerrorbars pt variable ps 1.3 lw 1.5");
     for (const auto* v : vs) {
       const auto* t = temperature(*v);
       if (!t || !std::isfinite(v->ns_per_number) || v->ns_per_number <= 0) continue;
@@ -176,10 +210,11 @@ Chart speed_accuracy(const Analysis& a, const std::string& dist) {
       l.rows.push_back({v->ns_per_number, 100 * t->shift, 100 * t->ci_low, 100 * t->ci_high, pt});
       l.labels.push_back(v->key.label());
       rounds.push_back(v->key.rounds);
-      all.push_back({v->ns_per_number, 100 * t->shift});
+      all[panel].push_back({v->ns_per_number, 100 * t->shift});
+      lo = std::min(lo, v->ns_per_number), hi = std::max(hi, v->ns_per_number);
       if (std::isfinite(margin) && std::abs(100 * t->shift) > margin && std::abs(100 * t->shift) <= 10) {
-        named.rows.push_back({v->ns_per_number, 100 * t->shift, NAN, NAN, NAN});
-        named.labels.push_back(v->key.label());
+        named[panel].rows.push_back({v->ns_per_number, 100 * t->shift, NAN, NAN, NAN});
+        named[panel].labels.push_back(v->key.label());
       }
     }
     c.lines.push_back(std::move(l));
@@ -187,11 +222,18 @@ Chart speed_accuracy(const Analysis& a, const std::string& dist) {
   std::vector<Line*> data;
   for (auto& l : c.lines) data.push_back(&l);
   fit_shift_axis(c, margin, data);
-  Line front{"Pareto front", "using 2:3 with steps dt 2 lw 1 lc rgb '#555555'", {}, {}};
-  front.rows = pareto_front(all);
-  if (front.rows.size() > 1) c.lines.push_back(std::move(front));
-  if (!named.rows.empty()) c.lines.push_back(std::move(named));
+  for (std::size_t p = 0; p < panels; ++p) {
+    Line front{"", "using 2:3 with steps dt 2 lw 1 lc rgb '#555555'", {}, {}, p};
+    front.rows = pareto_front(all[p]);
+    if (front.rows.size() > 1) c.lines.push_back(std::move(front));
+    named[p].style = "using 2:3:8 with labels offset 0.8,0.6 left font ',10' tc rgb '#333333'";
+    named[p].panel = p;
+    if (!named[p].rows.empty()) c.lines.push_back(std::move(named[p]));
+  }
+  // The reference's cost line can lie beyond every variant's: the x range holds both.
+  if (std::isfinite(lo) && hi > 0) c.extra += "set xrange [" + detail::num(lo / 1.3) + ":" + detail::num(hi * 1.3) + "]\n";
   c.key_entries = rounds_key(rounds);
+  c.key_entries.insert(c.key_entries.begin(), "keyentry with steps dt 2 lw 1 lc rgb '#555555' title \"Pareto front\"");
   c.key = "outside right top";
   return c;
 }
@@ -209,7 +251,7 @@ Chart predicted_measured(const Analysis& a) {
   std::size_t off_scale = 0;
   constexpr double kShown = 10;  // % : the headline effects are a few %; 64TEA(1) reaches thousands
   const double margin = 100 * temperature_margin(a);
-  std::map<std::string, Line> by_family;  // colour: family; shape: rounds; every noise in one panel
+  std::map<std::string, Line> by_family;  // colour: family; shape: rounds; every noise and seeding in one panel
   std::vector<int> rounds;
   Line named{"", "using 2:3:9 with labels offset 1,-0.6 left font ',10' tc rgb '#333333'", {}, {}};
   for (const auto& v : a.variants) {
@@ -222,8 +264,8 @@ Chart predicted_measured(const Analysis& a) {
     }
     lo = std::min({lo, p, 100 * t->ci_low}), hi = std::max({hi, p, 100 * t->ci_high});
     const double half = 196 * v.power_predicted_shift.se;
-    Line& l = by_family[v.key.generator + " " + v.key.seeding_name()];
-    l.title = v.key.generator + " " + v.key.seeding_name();
+    Line& l = by_family[v.key.generator];
+    l.title = v.key.generator;
     l.style = "using 2:3:4:5:6:7 with xyerrorbars pt 7 ps 0.6 " + detail::colour_style(v.key.generator);
     l.also = "using 2:3:8 with points pt variable ps 1.3 " + detail::colour_style(v.key.generator);
     l.rows.push_back({p, m, p - half, p + half, 100 * t->ci_low, 100 * t->ci_high,
@@ -231,7 +273,7 @@ Chart predicted_measured(const Analysis& a) {
     rounds.push_back(v.key.rounds);
     if (std::isfinite(margin) && std::abs(m) > margin) {
       named.rows.push_back({p, m});
-      named.labels.push_back(v.key.label() + " " + v.key.noise());
+      named.labels.push_back(v.key.label_and_seeding() + " " + v.key.noise());
     }
   }
   for (auto& [f, l] : by_family) c.lines.push_back(std::move(l));
@@ -243,8 +285,8 @@ Chart predicted_measured(const Analysis& a) {
   c.extra = "set xrange " + range + "\nset yrange " + range + "\nset size ratio -1\n" +
             "set arrow from " + detail::num(lo - pad) + "," + detail::num(lo - pad) + " to " + detail::num(hi + pad) +
             "," + detail::num(hi + pad) + " nohead dt 2 lc rgb 'black'\n" +
-            "set label " + detail::q("identity") + " at " + detail::num(lo + 0.1 * pad) + "," + detail::num(lo + 0.6 * pad) +
-            " rotate by 45 font ',10'\n";
+            "set label " + detail::q("dashed: identity (prediction exact)") +
+            " at graph 0.98, graph 0.04 right font ',10'\n";
   return c;
 }
 
@@ -252,11 +294,11 @@ Chart cost_rounds(const Analysis& a, const std::string& dist) {
   const VariantReport* ref = reference(a, dist);
   Chart c{"cost_vs_rounds_" + dist, "Cost of one random number inside the DPD run (" + dist + ")", kRoundsAxis,
           Axis{"cost per random number (generator + distribution)", "ns", Scale::log2}, {"rounds", "ns_per_number"}};
-  c.key = "inside top left";
+  c.key = "inside bottom right";
   if (ref) c.extra += detail::hline(ref->ns_per_number, ref->key.label(), "black");
+  c.panels = seeding_panels(a, dist);
   for (const auto& [fam, vs] : families(a, dist)) {
-    Line l{fam, "using 2:3 with linespoints lw 2 pt 7 " +
-                    detail::colour_style(vs.front()->key.generator), {}, {}};
+    Line l = family_line(c, fam, *vs.front(), "using 2:3 with linespoints lw 2 pt 7");
     for (const auto* v : vs)
       if (std::isfinite(v->ns_per_number) && v->ns_per_number > 0)
         l.rows.push_back({double(v->key.rounds), v->ns_per_number});
@@ -280,9 +322,9 @@ Chart pass_rounds(const Analysis& a, const std::string& dist, const std::string&
         c.extra += detail::hline(p.fraction, "", "black");
         break;
       }
+  c.panels = seeding_panels(a, dist);
   for (const auto& [fam, vs] : families(a, dist)) {
-    Line l{fam, "using 2:3:4:5 with yerrorlines lw 2 pt 7 " +
-                    detail::colour_style(vs.front()->key.generator), {}, {}};
+    Line l = family_line(c, fam, *vs.front(), "using 2:3:4:5 with yerrorlines lw 2 pt 7");
     for (const auto* v : vs) {
       const PassSummary* worst = nullptr;
       for (const auto& p : v->passes)

@@ -111,6 +111,47 @@ std::string rounds_figures_csv(const std::vector<RoundsRow>& rows) {
   return o.str();
 }
 
+namespace {
+
+// With several seedings, each (component) panel splits into one per seeding, each generator's line in its
+// seeding's panel titled by the generator alone and the reference's level in every panel of its component: the
+// panels then hold one line per generator, within six. A line's `also` carries "generator\tseeding" until here.
+void by_seeding(detail::Chart& c) {
+  std::vector<std::string> seedings;
+  for (const auto& l : c.lines) {
+    const std::string s = l.also.empty() ? "" : l.also.substr(l.also.find('\t') + 1);
+    if (!s.empty() && std::find(seedings.begin(), seedings.end(), s) == seedings.end()) seedings.push_back(s);
+  }
+  if (seedings.size() < 2) {
+    for (auto& l : c.lines) l.also.clear();
+    return;
+  }
+  const std::vector<std::string> components = c.panels.empty() ? std::vector<std::string>{""} : c.panels;
+  c.panels.clear();
+  for (const auto& comp : components)
+    for (const auto& s : seedings) c.panels.push_back((comp.empty() ? "" : comp + ", ") + s + " seeding");
+  std::vector<detail::Line> out;
+  for (auto& l : c.lines) {
+    const std::size_t first = l.panel * seedings.size();
+    if (l.also.empty()) {  // the reference's level, in each seeding's panel
+      for (std::size_t s = 0; s < seedings.size(); ++s) {
+        out.push_back(l);
+        out.back().panel = first + s;
+      }
+      continue;
+    }
+    const std::size_t tab = l.also.find('\t');
+    const std::string seeding = l.also.substr(tab + 1);
+    l.title = l.also.substr(0, tab);
+    l.panel = first + std::size_t(std::find(seedings.begin(), seedings.end(), seeding) - seedings.begin());
+    l.also.clear();
+    out.push_back(std::move(l));
+  }
+  c.lines = std::move(out);
+}
+
+}  // namespace
+
 std::vector<std::string> write_rounds_charts(const std::vector<RoundsRow>& rows, const fs::path& dir,
                                              std::ostream* log) {
   // One chart per figure and noise; a line per generator × seeding × observable, the reference as a level.
@@ -127,12 +168,12 @@ std::vector<std::string> write_rounds_charts(const std::vector<RoundsRow>& rows,
       // Errors span from a few 0.1 % to thousands of % (64TEA(1)): |shift| on a log axis, the paper's error
       // rate; the bars span |shift| over the 95 % CI, down to the floor when the CI holds 0. The components
       // themselves span decades too where 64TEA(1) heats the fluid to tens of k_BT.
-      c = detail::Chart{name, std::string(f->title) + " (" + k.noise() + "; the paper's Fig. " + f->id + ")",
+      c = detail::Chart{name,
+                        std::string(f->title) + " (" + k.noise() + "; Fig. " + f->id +
+                            (f->shift ? "; floor " + num(kRoundsFloor) + " % where the CI holds 0)" : ")"),
                         detail::Axis{"hash rounds", "1", detail::Scale::log2},
-                        detail::Axis{f->shift ? std::string("|") + f->ylabel + "| (floor " + num(kRoundsFloor) +
-                                                    " %: CI holds 0)"
-                                              : std::string(f->ylabel),
-                                     f->shift ? "%" : "k_BT", detail::Scale::log10},
+                        detail::Axis{f->shift ? "|shift| against MT19937" : f->ylabel, f->shift ? "%" : "k_BT",
+                                     detail::Scale::log10},
                         {"rounds", "value", "ci_low", "ci_high"}};
       c.key = "inside top right";
       if (f->shift) c.extra = "set yrange [" + num(kRoundsFloor) + ":*]\n";
@@ -146,7 +187,12 @@ std::vector<std::string> write_rounds_charts(const std::vector<RoundsRow>& rows,
     auto& l = lines[name][title + "\t" + std::to_string(panel)];
     l.title = title;
     l.panel = panel;
+    l.also = k.reference ? "" : k.generator + "\t" + k.seeding_name();  // read (and cleared) by by_seeding
     if (k.reference) {
+      // Its level is an annotation of each panel, named once in the key (not one of the panel's series).
+      l.title = "";
+      if (c.key_entries.empty())
+        c.key_entries.push_back("keyentry with lines dt 2 lw 2 lc rgb 'black' title " + detail::q(k.label() + " (reference)"));
       l.style = "using 2:3 with lines dt 2 lw 2 lc rgb 'black'";
       l.rows = {{1, r.value}, {1, r.value}};  // its right end set once the chart's rounds are known
       continue;
@@ -174,6 +220,7 @@ std::vector<std::string> write_rounds_charts(const std::vector<RoundsRow>& rows,
       for (const auto& row : l.rows) lo = std::min(lo, row[1]), hi = std::max(hi, row[1]);
       c.lines.push_back(std::move(l));
     }
+    by_seeding(c);
     // A log axis only where the values span a decade (64TEA(1)'s components at tens of k_BT); otherwise the
     // few-% differences stay visible on a linear one.
     if (c.y.unit == "k_BT" && !(lo > 0 && hi / lo > 10)) c.y.scale = detail::Scale::linear;

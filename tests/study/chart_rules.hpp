@@ -1,6 +1,6 @@
 #pragma once
 // The rules every chart follows (docs/charts.md), checked on a chart's three files: the gnuplot script (axis
-// labels with units, data read only from the chart's own CSV, at most six series per panel), the CSV (one header,
+// labels with units, data read only from the chart's own CSV, at most six titled series per panel), the CSV (one header,
 // every row as wide as it) and the rendered SVG (tick labels with no more digits than the data need, no two
 // text boxes overlapping). Text extents are estimated from the font size and the number of characters, as a
 // reader's eye would judge them: 0.55 em per character, 1 em tall.
@@ -35,7 +35,7 @@ inline std::size_t glyphs(const std::string& s) {
 inline std::vector<std::string> gp_violations(const std::string& gp, const std::string& name) {
   std::vector<std::string> v;
   for (const char* axis : {"x", "y"}) {
-    const std::regex label(std::string("set ") + axis + "label \"([^\"]*)\"");
+    const std::regex label(std::string("set ") + axis + R"re(label "((?:[^"\\]|\\.)*)")re");
     std::smatch m;
     const bool categories = gp.find(std::string("# ") + axis + " axis: categories") != std::string::npos;
     if (!std::regex_search(gp, m, label)) {
@@ -59,11 +59,13 @@ inline std::vector<std::string> gp_violations(const std::string& gp, const std::
     if (!command.empty() && (line.empty() || line.back() != '\\')) commands.push_back(command), command.clear();
   }
   if (commands.empty()) v.push_back("no plot command");
-  const std::regex index(R"(index (\d+))");
+  // A series is a block drawn with a title (in the key); untitled elements over it (point labels, the triangles
+  // of shifts beyond the axis, a Pareto front) annotate, and keyentry lines draw no data.
+  const std::regex element(R"re(index (\d+)[^\n]*? (title "([^"]*)"|notitle))re");
   for (const auto& c : commands) {
     std::set<std::string> blocks;
-    for (auto it = std::sregex_iterator(c.begin(), c.end(), index); it != std::sregex_iterator(); ++it)
-      blocks.insert((*it)[1].str());
+    for (auto it = std::sregex_iterator(c.begin(), c.end(), element); it != std::sregex_iterator(); ++it)
+      if ((*it)[3].matched && !(*it)[3].str().empty()) blocks.insert((*it)[1].str());
     if (blocks.size() > 6) v.push_back("a panel draws " + std::to_string(blocks.size()) + " series (at most 6)");
   }
   return v;

@@ -138,6 +138,11 @@ Calibration calibrate(const StudyConfig& config, const CalibrationPlan& plan, St
 nlohmann::json to_json(const Calibration& c);
 // Writes summary.md, calibration.json, false_alarms.csv, power.csv and charts/ (gnuplot) under dir.
 void write_calibration(const Calibration& c, const std::filesystem::path& dir, bool charts, std::ostream* log);
+// A calibration read back from what write_calibration committed (calibration.json and null_p_qq.csv): enough to
+// draw its charts without its pool. InputError when dir holds no readable calibration.
+Calibration read_calibration_tables(const std::filesystem::path& dir);
+// Writes the chart CSVs and scripts of the calibration in dir (its charts/), drawn from its tables.
+void write_calibration_charts(const Calibration& c, const std::filesystem::path& dir, bool run, std::ostream* log);
 
 // The report's detection-limit sentence for `config`, from the calibration.json files under `dir` (each a
 // calibration.json, or a directory of them): the one whose key matches the config and that has a row for its

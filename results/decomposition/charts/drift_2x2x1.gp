@@ -1,17 +1,21 @@
 # Momentum drift per bead, max |P(t) − P(0)|/N, domains 2x2x1
-# Rendered by: gnuplot -e "set terminal svg; set output 'x.svg'" drift_2x2x1.gp
-set title "Momentum drift per bead, max |P(t) − P(0)|/N, domains 2x2x1" noenhanced
-set xlabel "seeding"
-set ylabel ""
+# Data: drift_2x2x1.csv (column 1 the series; one block per series)
+# Redraw: gnuplot -e "set terminal svg; set output 'drift_2x2x1.svg'" drift_2x2x1.gp
+set xlabel "seeding" noenhanced
+# x axis: categories
+set ylabel "momentum drift per bead [m r_c/τ]" noenhanced
+set logscale y 10
+set format y "%g"
 set grid
-set key outside right top noenhanced
+set datafile separator comma
 set datafile missing "nan"
-set logscale y
+set key inside top right noenhanced opaque box samplen 2 spacing 1.1 font ',10'
 set style data histograms
 set style histogram clustered gap 1
 set style fill solid 0.8 border -1
 set xtics noenhanced rotate by -30
-plot "data/drift_2x2x1_0.dat" using 2:xtic(3) title "tea32(1) gauss", \
-     "data/drift_2x2x1_1.dat" using 2:xtic(3) title "tea32(8) gauss", \
-     "data/drift_2x2x1_2.dat" using 2:xtic(3) title "tea64(1) gauss", \
-     "data/drift_2x2x1_3.dat" using 2:xtic(3) title "philox4x32(10) gauss"
+set title "Momentum drift per bead, max |P(t) − P(0)|/N, domains 2x2x1" noenhanced
+plot "drift_2x2x1.csv" index 0 using 3:xtic(4) lc rgb '#0072B2' title "tea32(1) gauss", \
+     "drift_2x2x1.csv" index 1 using 3:xtic(4) lc rgb '#0072B2' title "tea32(8) gauss", \
+     "drift_2x2x1.csv" index 2 using 3:xtic(4) lc rgb '#E69F00' title "tea64(1) gauss", \
+     "drift_2x2x1.csv" index 3 using 3:xtic(4) lc rgb '#009E73' title "philox4x32(10) gauss"

@@ -1,12 +1,14 @@
 # Null P-values against uniform (okada2021, 4 replicas, 4536 tests), 95 % simultaneous band
-# Rendered by: gnuplot -e "set terminal svg; set output 'x.svg'" null_p_qq.gp
-set title "Null P-values against uniform (okada2021, 4 replicas, 4536 tests), 95 % simultaneous band" noenhanced
-set xlabel "expected -log10 p"
-set ylabel "observed -log10 p"
+# Data: null_p_qq.csv (column 1 the series; one block per series)
+# Redraw: gnuplot -e "set terminal svg; set output 'null_p_qq.svg'" null_p_qq.gp
+set xlabel "expected −log₁₀ p [1]" noenhanced
+set ylabel "observed −log₁₀ p [1]" noenhanced
 set grid
-set key outside right top noenhanced
+set datafile separator comma
 set datafile missing "nan"
-plot "data/null_p_qq_0.dat" using 1:2 with points pt 7 ps 0.4 title "null tests", \
-     "data/null_p_qq_1.dat" using 1:2 with lines dt 2 lc rgb 'gray40' title "band", \
-     "data/null_p_qq_2.dat" using 1:2 with lines dt 2 lc rgb 'gray40' title "", \
-     "data/null_p_qq_3.dat" using 1:2 with lines lc rgb 'red' title "uniform"
+set key inside top left noenhanced opaque box samplen 2 spacing 1.1 font ',10'
+set title "Null P-values against uniform (okada2021, 4 replicas, 4536 tests), 95 % simultaneous band" noenhanced
+plot "null_p_qq.csv" index 0 using 2:3 with points pt 7 ps 0.4 title "null tests", \
+     "null_p_qq.csv" index 1 using 2:3 with lines dt 2 lc rgb '#555555' title "95 % band", \
+     "null_p_qq.csv" index 2 using 2:3 with lines dt 2 lc rgb '#555555' title "", \
+     "null_p_qq.csv" index 3 using 2:3 with lines lc rgb '#B2182B' title "uniform"

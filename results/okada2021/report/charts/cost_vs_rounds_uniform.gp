@@ -11,7 +11,7 @@ set format y "%g"
 set grid
 set datafile separator comma
 set datafile missing "nan"
-set key inside top left noenhanced opaque box samplen 2 spacing 1.1 font ',10'
+set key inside bottom right noenhanced opaque box samplen 2 spacing 1.1 font ',10'
 set arrow from graph 0, first 5.15379 to graph 1, first 5.15379 nohead dt 2 lw 2 lc rgb 'black'
 set label "mt19937" at graph 0.01, first 5.15379 offset 0,0.6 font ',10' tc rgb 'black'
 set title "Cost of one random number inside the DPD run (uniform)" noenhanced

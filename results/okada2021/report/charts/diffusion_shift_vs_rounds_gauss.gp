@@ -1,11 +1,11 @@
-# Error rate of the diffusion coefficient against MT, |shift| with its 95 % CI (gauss; the paper's Fig. 5b)
+# Error rate of the diffusion coefficient against MT, |shift| with its 95 % CI (gauss; Fig. 5b; floor 0.001 % where the CI holds 0)
 # Data: diffusion_shift_vs_rounds_gauss.csv (column 1 the series; one block per series)
 # Redraw: gnuplot -e "set terminal svg; set output 'diffusion_shift_vs_rounds_gauss.svg'" diffusion_shift_vs_rounds_gauss.gp
 set xlabel "hash rounds [1]" noenhanced
 set logscale x 2
 set format x "%g"
 set offsets graph 0.03, graph 0.03, 0, 0
-set ylabel "|(D − D_{MT}) / D_{MT}| (floor 0.001 %: CI holds 0) [%]" noenhanced
+set ylabel "|shift| against MT19937 [%]" noenhanced
 set logscale y 10
 set format y "%g"
 set grid
@@ -13,6 +13,6 @@ set datafile separator comma
 set datafile missing "nan"
 set key inside top right noenhanced opaque box samplen 2 spacing 1.1 font ',10'
 set yrange [0.001:*]
-set title "Error rate of the diffusion coefficient against MT, |shift| with its 95 % CI (gauss; the paper's Fig. 5b)" noenhanced
+set title "Error rate of the diffusion coefficient against MT, |shift| with its 95 % CI (gauss; Fig. 5b; floor 0.001 % where the CI holds 0)" noenhanced
 plot "diffusion_shift_vs_rounds_gauss.csv" index 0 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32 distance", \
      "diffusion_shift_vs_rounds_gauss.csv" index 1 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64 distance"

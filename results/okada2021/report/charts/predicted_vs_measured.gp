@@ -11,11 +11,11 @@ set xrange [-4.43681:1.58974]
 set yrange [-4.43681:1.58974]
 set size ratio -1
 set arrow from -4.43681,-4.43681 to 1.58974,1.58974 nohead dt 2 lc rgb 'black'
-set label "identity" at -3.88438,-3.63327 rotate by 45 font ',10'
+set label "dashed: identity (prediction exact)" at graph 0.98, graph 0.04 right font ',10'
 set title "Temperature shift: predicted from the noise's effective power against measured (8 beyond ±10 % not drawn)" noenhanced
-plot "predicted_vs_measured.csv" index 0 using 2:3:4:5:6:7 with xyerrorbars pt 7 ps 0.6 lc rgb '#0072B2' title "tea32 distance", \
+plot "predicted_vs_measured.csv" index 0 using 2:3:4:5:6:7 with xyerrorbars pt 7 ps 0.6 lc rgb '#0072B2' title "tea32", \
      "predicted_vs_measured.csv" index 0 using 2:3:8 with points pt variable ps 1.3 lc rgb '#0072B2' notitle, \
-     "predicted_vs_measured.csv" index 1 using 2:3:4:5:6:7 with xyerrorbars pt 7 ps 0.6 lc rgb '#E69F00' title "tea64 distance", \
+     "predicted_vs_measured.csv" index 1 using 2:3:4:5:6:7 with xyerrorbars pt 7 ps 0.6 lc rgb '#E69F00' title "tea64", \
      "predicted_vs_measured.csv" index 1 using 2:3:8 with points pt variable ps 1.3 lc rgb '#E69F00' notitle, \
      "predicted_vs_measured.csv" index 2 using 2:3:9 with labels offset 1,-0.6 left font ',10' tc rgb '#333333' title "", \
      keyentry with points pt 7 lc rgb 'black' title "1 round", \

@@ -1,25 +1,36 @@
 # Cost of one random number inside the DPD run (gauss-blocks)
-# Rendered by: gnuplot -e "set terminal svg; set output 'x.svg'" cost_vs_rounds_gauss-blocks.gp
-set title "Cost of one random number inside the DPD run (gauss-blocks)" noenhanced
-set xlabel "rounds"
-set ylabel "ns per number (generator + distribution)"
-set grid
-set key outside right top noenhanced
-set datafile missing "nan"
+# Data: cost_vs_rounds_gauss-blocks.csv (column 1 the series; one block per series)
+# Redraw: gnuplot -e "set terminal svg; set output 'cost_vs_rounds_gauss-blocks.svg'" cost_vs_rounds_gauss-blocks.gp
+# small multiples: 2 panels
+set xlabel "hash rounds [1]" noenhanced
 set logscale x 2
-set logscale y
-set xrange [0.8:*]
-set arrow from graph 0, first 8.64343 to graph 1, first 8.64343 nohead dt 2 lw 2 lc rgb 'black'
-set label "mt19937" at graph 0.01, first 8.64343 offset 0,0.6 tc rgb 'black'
-plot "data/cost_vs_rounds_gauss-blocks_0.dat" using 1:2 with linespoints lw 2 pt 7 title "philox4x32 distance", \
-     "data/cost_vs_rounds_gauss-blocks_1.dat" using 1:2 with linespoints lw 2 pt 7 title "philox4x32 pair-step", \
-     "data/cost_vs_rounds_gauss-blocks_2.dat" using 1:2 with linespoints lw 2 pt 7 title "saru distance", \
-     "data/cost_vs_rounds_gauss-blocks_3.dat" using 1:2 with linespoints lw 2 pt 7 title "saru pair-step", \
-     "data/cost_vs_rounds_gauss-blocks_4.dat" using 1:2 with linespoints lw 2 pt 7 title "splitmix64 distance", \
-     "data/cost_vs_rounds_gauss-blocks_5.dat" using 1:2 with linespoints lw 2 pt 7 title "splitmix64 pair-step", \
-     "data/cost_vs_rounds_gauss-blocks_6.dat" using 1:2 with linespoints lw 2 pt 7 title "tea32 distance", \
-     "data/cost_vs_rounds_gauss-blocks_7.dat" using 1:2 with linespoints lw 2 pt 7 title "tea32 pair-step", \
-     "data/cost_vs_rounds_gauss-blocks_8.dat" using 1:2 with linespoints lw 2 pt 7 title "tea64 distance", \
-     "data/cost_vs_rounds_gauss-blocks_9.dat" using 1:2 with linespoints lw 2 pt 7 title "tea64 pair-step", \
-     "data/cost_vs_rounds_gauss-blocks_10.dat" using 1:2 with linespoints lw 2 pt 7 title "threefry2x64 distance", \
-     "data/cost_vs_rounds_gauss-blocks_11.dat" using 1:2 with linespoints lw 2 pt 7 title "threefry2x64 pair-step"
+set format x "%g"
+set offsets graph 0.03, graph 0.03, 0, 0
+set ylabel "cost per random number (generator + distribution) [ns]" noenhanced
+set logscale y 2
+set format y "%g"
+set grid
+set datafile separator comma
+set datafile missing "nan"
+unset key
+set arrow from graph 0, first 10.3193 to graph 1, first 10.3193 nohead dt 2 lw 2 lc rgb 'black'
+set label "mt19937" at graph 0.01, first 10.3193 offset 0,0.6 font ',10' tc rgb 'black'
+set multiplot layout 1,2 title "Cost of one random number inside the DPD run (gauss-blocks)" noenhanced
+set title "distance seeding" noenhanced
+unset colorbox
+plot "cost_vs_rounds_gauss-blocks.csv" index 0 using 2:3 with linespoints lw 2 pt 7 lc rgb '#009E73' title "philox4x32", \
+     "cost_vs_rounds_gauss-blocks.csv" index 2 using 2:3 with linespoints lw 2 pt 7 lc rgb '#D55E00' title "saru", \
+     "cost_vs_rounds_gauss-blocks.csv" index 4 using 2:3 with linespoints lw 2 pt 7 lc rgb '#56B4E9' title "splitmix64", \
+     "cost_vs_rounds_gauss-blocks.csv" index 6 using 2:3 with linespoints lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
+     "cost_vs_rounds_gauss-blocks.csv" index 8 using 2:3 with linespoints lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
+     "cost_vs_rounds_gauss-blocks.csv" index 10 using 2:3 with linespoints lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64"
+set title "pair-step seeding" noenhanced
+set key inside bottom right noenhanced opaque box samplen 2 spacing 1.1 font ',10'
+set colorbox
+plot "cost_vs_rounds_gauss-blocks.csv" index 1 using 2:3 with linespoints lw 2 pt 7 lc rgb '#009E73' title "philox4x32", \
+     "cost_vs_rounds_gauss-blocks.csv" index 3 using 2:3 with linespoints lw 2 pt 7 lc rgb '#D55E00' title "saru", \
+     "cost_vs_rounds_gauss-blocks.csv" index 5 using 2:3 with linespoints lw 2 pt 7 lc rgb '#56B4E9' title "splitmix64", \
+     "cost_vs_rounds_gauss-blocks.csv" index 7 using 2:3 with linespoints lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
+     "cost_vs_rounds_gauss-blocks.csv" index 9 using 2:3 with linespoints lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
+     "cost_vs_rounds_gauss-blocks.csv" index 11 using 2:3 with linespoints lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64"
+unset multiplot

@@ -1,32 +1,21 @@
 # Mean squared displacement (gauss-blocks)
-# Rendered by: gnuplot -e "set terminal svg; set output 'x.svg'" msd_gauss-blocks.gp
-set title "Mean squared displacement (gauss-blocks)" noenhanced
-set xlabel "τ"
-set ylabel "MSD"
+# Data: msd_gauss-blocks.csv (column 1 the series; one block per series)
+# Redraw: gnuplot -e "set terminal svg; set output 'msd_gauss-blocks.svg'" msd_gauss-blocks.gp
+set xlabel "lag time t [τ]" noenhanced
+set logscale x 10
+set format x "%g"
+set offsets graph 0.03, graph 0.03, 0, 0
+set ylabel "mean squared displacement [r_c²]" noenhanced
+set logscale y 10
+set format y "%g"
 set grid
-set key outside right top noenhanced
+set datafile separator comma
 set datafile missing "nan"
-set logscale x 2
-set logscale y
-set xrange [0.32:*]
-plot "data/msd_gauss-blocks_0.dat" using 1:2 with lines lw 4 lc rgb 'black' title "mt19937 (reference, 4 replicas)", \
-     "data/msd_gauss-blocks_1.dat" using 1:2 with lines lw 2 title "philox4x32(7) distance", \
-     "data/msd_gauss-blocks_2.dat" using 1:2 with lines lw 2 dt 3 title "philox4x32(10) distance", \
-     "data/msd_gauss-blocks_3.dat" using 1:2 with lines lw 2 title "philox4x32(7) pair-step", \
-     "data/msd_gauss-blocks_4.dat" using 1:2 with lines lw 2 dt 3 title "philox4x32(10) pair-step", \
-     "data/msd_gauss-blocks_5.dat" using 1:2 with lines lw 2 title "saru distance", \
-     "data/msd_gauss-blocks_6.dat" using 1:2 with lines lw 2 title "saru pair-step", \
-     "data/msd_gauss-blocks_7.dat" using 1:2 with lines lw 2 title "splitmix64 distance", \
-     "data/msd_gauss-blocks_8.dat" using 1:2 with lines lw 2 title "splitmix64 pair-step", \
-     "data/msd_gauss-blocks_9.dat" using 1:2 with lines lw 2 title "tea32(1) distance", \
-     "data/msd_gauss-blocks_10.dat" using 1:2 with lines lw 2 dt 3 title "tea32(8) distance", \
-     "data/msd_gauss-blocks_11.dat" using 1:2 with lines lw 2 title "tea32(1) pair-step", \
-     "data/msd_gauss-blocks_12.dat" using 1:2 with lines lw 2 dt 3 title "tea32(8) pair-step", \
-     "data/msd_gauss-blocks_13.dat" using 1:2 with lines lw 2 title "tea64(1) distance", \
-     "data/msd_gauss-blocks_14.dat" using 1:2 with lines lw 2 dt 3 title "tea64(8) distance", \
-     "data/msd_gauss-blocks_15.dat" using 1:2 with lines lw 2 title "tea64(1) pair-step", \
-     "data/msd_gauss-blocks_16.dat" using 1:2 with lines lw 2 dt 3 title "tea64(8) pair-step", \
-     "data/msd_gauss-blocks_17.dat" using 1:2 with lines lw 2 title "threefry2x64(13) distance", \
-     "data/msd_gauss-blocks_18.dat" using 1:2 with lines lw 2 dt 3 title "threefry2x64(20) distance", \
-     "data/msd_gauss-blocks_19.dat" using 1:2 with lines lw 2 title "threefry2x64(13) pair-step", \
-     "data/msd_gauss-blocks_20.dat" using 1:2 with lines lw 2 dt 3 title "threefry2x64(20) pair-step"
+set key inside top right noenhanced opaque box samplen 2 spacing 1.1 font ',10'
+set title "Mean squared displacement (gauss-blocks)" noenhanced
+plot "msd_gauss-blocks.csv" index 0 using 2:3 with lines lw 4 lc rgb 'black' title "mt19937 (reference, 4 replicas)", \
+     "msd_gauss-blocks.csv" index 1 using 2:3 with lines lw 2 lc rgb '#009E73' title "philox4x32(7) distance", \
+     "msd_gauss-blocks.csv" index 2 using 2:3 with lines lw 2 lc rgb '#009E73' title "philox4x32(7) pair-step", \
+     "msd_gauss-blocks.csv" index 3 using 2:3 with lines lw 2 lc rgb '#D55E00' title "saru distance", \
+     "msd_gauss-blocks.csv" index 4 using 2:3 with lines lw 2 lc rgb '#D55E00' title "saru pair-step", \
+     "msd_gauss-blocks.csv" index 5 using 2:3 with lines lw 2 lc rgb '#56B4E9' title "splitmix64 distance"

@@ -1,24 +1,35 @@
-# Error rate of g(r) against MT: |shift| of the bin whose 95 % CI reaches furthest from 0 (gauss-blocks; the paper's Fig. 6b)
-# Rendered by: gnuplot -e "set terminal svg; set output 'x.svg'" rdf_shift_vs_rounds_gauss-blocks.gp
-set title "Error rate of g(r) against MT: |shift| of the bin whose 95 % CI reaches furthest from 0 (gauss-blocks; the paper's Fig. 6b)" noenhanced
-set xlabel "rounds"
-set ylabel "|(g − g_{MT}) / g_{MT} in that bin| in % (log scale; floor 0.001 %: CI holds 0)"
-set grid
-set key outside right top noenhanced
-set datafile missing "nan"
+# Error rate of g(r) against MT: |shift| of the bin whose 95 % CI reaches furthest from 0 (gauss-blocks; Fig. 6b; floor 0.001 % where the CI holds 0)
+# Data: rdf_shift_vs_rounds_gauss-blocks.csv (column 1 the series; one block per series)
+# Redraw: gnuplot -e "set terminal svg; set output 'rdf_shift_vs_rounds_gauss-blocks.svg'" rdf_shift_vs_rounds_gauss-blocks.gp
+# small multiples: 2 panels
+set xlabel "hash rounds [1]" noenhanced
 set logscale x 2
-set logscale y
-set xrange [0.8:*]
+set format x "%g"
+set offsets graph 0.03, graph 0.03, 0, 0
+set ylabel "|shift| against MT19937 [%]" noenhanced
+set logscale y 10
+set format y "%g"
+set grid
+set datafile separator comma
+set datafile missing "nan"
+unset key
 set yrange [0.001:*]
-plot "data/rdf_shift_vs_rounds_gauss-blocks_0.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "philox4x32 distance", \
-     "data/rdf_shift_vs_rounds_gauss-blocks_1.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "philox4x32 pair-step", \
-     "data/rdf_shift_vs_rounds_gauss-blocks_2.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "saru distance", \
-     "data/rdf_shift_vs_rounds_gauss-blocks_3.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "saru pair-step", \
-     "data/rdf_shift_vs_rounds_gauss-blocks_4.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "splitmix64 distance", \
-     "data/rdf_shift_vs_rounds_gauss-blocks_5.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "splitmix64 pair-step", \
-     "data/rdf_shift_vs_rounds_gauss-blocks_6.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea32 distance", \
-     "data/rdf_shift_vs_rounds_gauss-blocks_7.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea32 pair-step", \
-     "data/rdf_shift_vs_rounds_gauss-blocks_8.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea64 distance", \
-     "data/rdf_shift_vs_rounds_gauss-blocks_9.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea64 pair-step", \
-     "data/rdf_shift_vs_rounds_gauss-blocks_10.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "threefry2x64 distance", \
-     "data/rdf_shift_vs_rounds_gauss-blocks_11.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "threefry2x64 pair-step"
+set multiplot layout 1,2 title "Error rate of g(r) against MT: |shift| of the bin whose 95 % CI reaches furthest from 0 (gauss-blocks; Fig. 6b; floor 0.001 % where the CI holds 0)" noenhanced
+set title "distance seeding" noenhanced
+unset colorbox
+plot "rdf_shift_vs_rounds_gauss-blocks.csv" index 0 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#009E73' title "philox4x32", \
+     "rdf_shift_vs_rounds_gauss-blocks.csv" index 2 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#D55E00' title "saru", \
+     "rdf_shift_vs_rounds_gauss-blocks.csv" index 4 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#56B4E9' title "splitmix64", \
+     "rdf_shift_vs_rounds_gauss-blocks.csv" index 6 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
+     "rdf_shift_vs_rounds_gauss-blocks.csv" index 8 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
+     "rdf_shift_vs_rounds_gauss-blocks.csv" index 10 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64"
+set title "pair-step seeding" noenhanced
+set key inside top right noenhanced opaque box samplen 2 spacing 1.1 font ',10'
+set colorbox
+plot "rdf_shift_vs_rounds_gauss-blocks.csv" index 1 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#009E73' title "philox4x32", \
+     "rdf_shift_vs_rounds_gauss-blocks.csv" index 3 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#D55E00' title "saru", \
+     "rdf_shift_vs_rounds_gauss-blocks.csv" index 5 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#56B4E9' title "splitmix64", \
+     "rdf_shift_vs_rounds_gauss-blocks.csv" index 7 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
+     "rdf_shift_vs_rounds_gauss-blocks.csv" index 9 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
+     "rdf_shift_vs_rounds_gauss-blocks.csv" index 11 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64"
+unset multiplot

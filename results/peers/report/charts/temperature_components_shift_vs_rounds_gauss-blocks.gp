@@ -1,48 +1,67 @@
-# Error rate of each temperature component against MT, |shift| with its 95 % CI (gauss-blocks; the paper's Fig. 4d)
-# Rendered by: gnuplot -e "set terminal svg; set output 'x.svg'" temperature_components_shift_vs_rounds_gauss-blocks.gp
-set title "Error rate of each temperature component against MT, |shift| with its 95 % CI (gauss-blocks; the paper's Fig. 4d)" noenhanced
-set xlabel "rounds"
-set ylabel "|(T_α − T_{α,MT}) / T_{α,MT}| in % (log scale; floor 0.001 %: CI holds 0)"
-set grid
-set key outside right top noenhanced
-set datafile missing "nan"
+# Error rate of each temperature component against MT, |shift| with its 95 % CI (gauss-blocks; Fig. 4d; floor 0.001 % where the CI holds 0)
+# Data: temperature_components_shift_vs_rounds_gauss-blocks.csv (column 1 the series; one block per series)
+# Redraw: gnuplot -e "set terminal svg; set output 'temperature_components_shift_vs_rounds_gauss-blocks.svg'" temperature_components_shift_vs_rounds_gauss-blocks.gp
+# small multiples: 6 panels
+set xlabel "hash rounds [1]" noenhanced
 set logscale x 2
-set logscale y
-set xrange [0.8:*]
+set format x "%g"
+set offsets graph 0.03, graph 0.03, 0, 0
+set ylabel "|shift| against MT19937 [%]" noenhanced
+set logscale y 10
+set format y "%g"
+set grid
+set datafile separator comma
+set datafile missing "nan"
+unset key
 set yrange [0.001:*]
-plot "data/temperature_components_shift_vs_rounds_gauss-blocks_0.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "philox4x32 distance T_x", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_1.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "philox4x32 distance T_y", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_2.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "philox4x32 distance T_z", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_3.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "philox4x32 pair-step T_x", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_4.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "philox4x32 pair-step T_y", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_5.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "philox4x32 pair-step T_z", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_6.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "saru distance T_x", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_7.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "saru distance T_y", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_8.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "saru distance T_z", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_9.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "saru pair-step T_x", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_10.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "saru pair-step T_y", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_11.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "saru pair-step T_z", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_12.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "splitmix64 distance T_x", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_13.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "splitmix64 distance T_y", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_14.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "splitmix64 distance T_z", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_15.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "splitmix64 pair-step T_x", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_16.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "splitmix64 pair-step T_y", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_17.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "splitmix64 pair-step T_z", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_18.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea32 distance T_x", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_19.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea32 distance T_y", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_20.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea32 distance T_z", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_21.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea32 pair-step T_x", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_22.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea32 pair-step T_y", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_23.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea32 pair-step T_z", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_24.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea64 distance T_x", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_25.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea64 distance T_y", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_26.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea64 distance T_z", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_27.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea64 pair-step T_x", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_28.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea64 pair-step T_y", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_29.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea64 pair-step T_z", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_30.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "threefry2x64 distance T_x", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_31.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "threefry2x64 distance T_y", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_32.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "threefry2x64 distance T_z", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_33.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "threefry2x64 pair-step T_x", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_34.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "threefry2x64 pair-step T_y", \
-     "data/temperature_components_shift_vs_rounds_gauss-blocks_35.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "threefry2x64 pair-step T_z"
+set multiplot layout 2,3 title "Error rate of each temperature component against MT, |shift| with its 95 % CI (gauss-blocks; Fig. 4d; floor 0.001 % where the CI holds 0)" noenhanced
+set title "T_x, distance seeding" noenhanced
+unset colorbox
+plot "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 0 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#009E73' title "philox4x32", \
+     "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 6 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#D55E00' title "saru", \
+     "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 12 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#56B4E9' title "splitmix64", \
+     "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 18 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
+     "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 24 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
+     "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 30 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64"
+set title "T_x, pair-step seeding" noenhanced
+unset colorbox
+plot "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 3 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#009E73' title "philox4x32", \
+     "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 9 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#D55E00' title "saru", \
+     "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 15 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#56B4E9' title "splitmix64", \
+     "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 21 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
+     "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 27 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
+     "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 33 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64"
+set title "T_y, distance seeding" noenhanced
+unset colorbox
+plot "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 1 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#009E73' title "philox4x32", \
+     "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 7 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#D55E00' title "saru", \
+     "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 13 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#56B4E9' title "splitmix64", \
+     "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 19 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
+     "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 25 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
+     "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 31 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64"
+set title "T_y, pair-step seeding" noenhanced
+unset colorbox
+plot "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 4 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#009E73' title "philox4x32", \
+     "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 10 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#D55E00' title "saru", \
+     "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 16 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#56B4E9' title "splitmix64", \
+     "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 22 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
+     "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 28 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
+     "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 34 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64"
+set title "T_z, distance seeding" noenhanced
+unset colorbox
+plot "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 2 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#009E73' title "philox4x32", \
+     "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 8 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#D55E00' title "saru", \
+     "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 14 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#56B4E9' title "splitmix64", \
+     "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 20 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
+     "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 26 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
+     "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 32 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64"
+set title "T_z, pair-step seeding" noenhanced
+set key inside top right noenhanced opaque box samplen 2 spacing 1.1 font ',10'
+set colorbox
+plot "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 5 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#009E73' title "philox4x32", \
+     "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 11 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#D55E00' title "saru", \
+     "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 17 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#56B4E9' title "splitmix64", \
+     "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 23 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
+     "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 29 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
+     "temperature_components_shift_vs_rounds_gauss-blocks.csv" index 35 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64"
+unset multiplot

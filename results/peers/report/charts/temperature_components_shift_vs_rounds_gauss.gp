@@ -1,48 +1,67 @@
-# Error rate of each temperature component against MT, |shift| with its 95 % CI (gauss; the paper's Fig. 4d)
-# Rendered by: gnuplot -e "set terminal svg; set output 'x.svg'" temperature_components_shift_vs_rounds_gauss.gp
-set title "Error rate of each temperature component against MT, |shift| with its 95 % CI (gauss; the paper's Fig. 4d)" noenhanced
-set xlabel "rounds"
-set ylabel "|(T_α − T_{α,MT}) / T_{α,MT}| in % (log scale; floor 0.001 %: CI holds 0)"
-set grid
-set key outside right top noenhanced
-set datafile missing "nan"
+# Error rate of each temperature component against MT, |shift| with its 95 % CI (gauss; Fig. 4d; floor 0.001 % where the CI holds 0)
+# Data: temperature_components_shift_vs_rounds_gauss.csv (column 1 the series; one block per series)
+# Redraw: gnuplot -e "set terminal svg; set output 'temperature_components_shift_vs_rounds_gauss.svg'" temperature_components_shift_vs_rounds_gauss.gp
+# small multiples: 6 panels
+set xlabel "hash rounds [1]" noenhanced
 set logscale x 2
-set logscale y
-set xrange [0.8:*]
+set format x "%g"
+set offsets graph 0.03, graph 0.03, 0, 0
+set ylabel "|shift| against MT19937 [%]" noenhanced
+set logscale y 10
+set format y "%g"
+set grid
+set datafile separator comma
+set datafile missing "nan"
+unset key
 set yrange [0.001:*]
-plot "data/temperature_components_shift_vs_rounds_gauss_0.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "philox4x32 distance T_x", \
-     "data/temperature_components_shift_vs_rounds_gauss_1.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "philox4x32 distance T_y", \
-     "data/temperature_components_shift_vs_rounds_gauss_2.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "philox4x32 distance T_z", \
-     "data/temperature_components_shift_vs_rounds_gauss_3.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "philox4x32 pair-step T_x", \
-     "data/temperature_components_shift_vs_rounds_gauss_4.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "philox4x32 pair-step T_y", \
-     "data/temperature_components_shift_vs_rounds_gauss_5.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "philox4x32 pair-step T_z", \
-     "data/temperature_components_shift_vs_rounds_gauss_6.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "saru distance T_x", \
-     "data/temperature_components_shift_vs_rounds_gauss_7.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "saru distance T_y", \
-     "data/temperature_components_shift_vs_rounds_gauss_8.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "saru distance T_z", \
-     "data/temperature_components_shift_vs_rounds_gauss_9.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "saru pair-step T_x", \
-     "data/temperature_components_shift_vs_rounds_gauss_10.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "saru pair-step T_y", \
-     "data/temperature_components_shift_vs_rounds_gauss_11.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "saru pair-step T_z", \
-     "data/temperature_components_shift_vs_rounds_gauss_12.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "splitmix64 distance T_x", \
-     "data/temperature_components_shift_vs_rounds_gauss_13.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "splitmix64 distance T_y", \
-     "data/temperature_components_shift_vs_rounds_gauss_14.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "splitmix64 distance T_z", \
-     "data/temperature_components_shift_vs_rounds_gauss_15.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "splitmix64 pair-step T_x", \
-     "data/temperature_components_shift_vs_rounds_gauss_16.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "splitmix64 pair-step T_y", \
-     "data/temperature_components_shift_vs_rounds_gauss_17.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "splitmix64 pair-step T_z", \
-     "data/temperature_components_shift_vs_rounds_gauss_18.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea32 distance T_x", \
-     "data/temperature_components_shift_vs_rounds_gauss_19.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea32 distance T_y", \
-     "data/temperature_components_shift_vs_rounds_gauss_20.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea32 distance T_z", \
-     "data/temperature_components_shift_vs_rounds_gauss_21.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea32 pair-step T_x", \
-     "data/temperature_components_shift_vs_rounds_gauss_22.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea32 pair-step T_y", \
-     "data/temperature_components_shift_vs_rounds_gauss_23.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea32 pair-step T_z", \
-     "data/temperature_components_shift_vs_rounds_gauss_24.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea64 distance T_x", \
-     "data/temperature_components_shift_vs_rounds_gauss_25.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea64 distance T_y", \
-     "data/temperature_components_shift_vs_rounds_gauss_26.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea64 distance T_z", \
-     "data/temperature_components_shift_vs_rounds_gauss_27.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea64 pair-step T_x", \
-     "data/temperature_components_shift_vs_rounds_gauss_28.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea64 pair-step T_y", \
-     "data/temperature_components_shift_vs_rounds_gauss_29.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "tea64 pair-step T_z", \
-     "data/temperature_components_shift_vs_rounds_gauss_30.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "threefry2x64 distance T_x", \
-     "data/temperature_components_shift_vs_rounds_gauss_31.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "threefry2x64 distance T_y", \
-     "data/temperature_components_shift_vs_rounds_gauss_32.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "threefry2x64 distance T_z", \
-     "data/temperature_components_shift_vs_rounds_gauss_33.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "threefry2x64 pair-step T_x", \
-     "data/temperature_components_shift_vs_rounds_gauss_34.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "threefry2x64 pair-step T_y", \
-     "data/temperature_components_shift_vs_rounds_gauss_35.dat" using 1:2:3:4 with yerrorlines lw 2 pt 7 title "threefry2x64 pair-step T_z"
+set multiplot layout 2,3 title "Error rate of each temperature component against MT, |shift| with its 95 % CI (gauss; Fig. 4d; floor 0.001 % where the CI holds 0)" noenhanced
+set title "T_x, distance seeding" noenhanced
+unset colorbox
+plot "temperature_components_shift_vs_rounds_gauss.csv" index 0 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#009E73' title "philox4x32", \
+     "temperature_components_shift_vs_rounds_gauss.csv" index 6 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#D55E00' title "saru", \
+     "temperature_components_shift_vs_rounds_gauss.csv" index 12 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#56B4E9' title "splitmix64", \
+     "temperature_components_shift_vs_rounds_gauss.csv" index 18 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
+     "temperature_components_shift_vs_rounds_gauss.csv" index 24 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
+     "temperature_components_shift_vs_rounds_gauss.csv" index 30 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64"
+set title "T_x, pair-step seeding" noenhanced
+unset colorbox
+plot "temperature_components_shift_vs_rounds_gauss.csv" index 3 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#009E73' title "philox4x32", \
+     "temperature_components_shift_vs_rounds_gauss.csv" index 9 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#D55E00' title "saru", \
+     "temperature_components_shift_vs_rounds_gauss.csv" index 15 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#56B4E9' title "splitmix64", \
+     "temperature_components_shift_vs_rounds_gauss.csv" index 21 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
+     "temperature_components_shift_vs_rounds_gauss.csv" index 27 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
+     "temperature_components_shift_vs_rounds_gauss.csv" index 33 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64"
+set title "T_y, distance seeding" noenhanced
+unset colorbox
+plot "temperature_components_shift_vs_rounds_gauss.csv" index 1 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#009E73' title "philox4x32", \
+     "temperature_components_shift_vs_rounds_gauss.csv" index 7 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#D55E00' title "saru", \
+     "temperature_components_shift_vs_rounds_gauss.csv" index 13 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#56B4E9' title "splitmix64", \
+     "temperature_components_shift_vs_rounds_gauss.csv" index 19 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
+     "temperature_components_shift_vs_rounds_gauss.csv" index 25 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
+     "temperature_components_shift_vs_rounds_gauss.csv" index 31 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64"
+set title "T_y, pair-step seeding" noenhanced
+unset colorbox
+plot "temperature_components_shift_vs_rounds_gauss.csv" index 4 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#009E73' title "philox4x32", \
+     "temperature_components_shift_vs_rounds_gauss.csv" index 10 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#D55E00' title "saru", \
+     "temperature_components_shift_vs_rounds_gauss.csv" index 16 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#56B4E9' title "splitmix64", \
+     "temperature_components_shift_vs_rounds_gauss.csv" index 22 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
+     "temperature_components_shift_vs_rounds_gauss.csv" index 28 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
+     "temperature_components_shift_vs_rounds_gauss.csv" index 34 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64"
+set title "T_z, distance seeding" noenhanced
+unset colorbox
+plot "temperature_components_shift_vs_rounds_gauss.csv" index 2 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#009E73' title "philox4x32", \
+     "temperature_components_shift_vs_rounds_gauss.csv" index 8 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#D55E00' title "saru", \
+     "temperature_components_shift_vs_rounds_gauss.csv" index 14 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#56B4E9' title "splitmix64", \
+     "temperature_components_shift_vs_rounds_gauss.csv" index 20 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
+     "temperature_components_shift_vs_rounds_gauss.csv" index 26 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
+     "temperature_components_shift_vs_rounds_gauss.csv" index 32 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64"
+set title "T_z, pair-step seeding" noenhanced
+set key inside top right noenhanced opaque box samplen 2 spacing 1.1 font ',10'
+set colorbox
+plot "temperature_components_shift_vs_rounds_gauss.csv" index 5 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#009E73' title "philox4x32", \
+     "temperature_components_shift_vs_rounds_gauss.csv" index 11 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#D55E00' title "saru", \
+     "temperature_components_shift_vs_rounds_gauss.csv" index 17 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#56B4E9' title "splitmix64", \
+     "temperature_components_shift_vs_rounds_gauss.csv" index 23 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
+     "temperature_components_shift_vs_rounds_gauss.csv" index 29 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
+     "temperature_components_shift_vs_rounds_gauss.csv" index 35 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64"
+unset multiplot

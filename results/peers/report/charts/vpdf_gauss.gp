@@ -1,31 +1,18 @@
 # Velocity PDF, pooled components (gauss)
-# Rendered by: gnuplot -e "set terminal svg; set output 'x.svg'" vpdf_gauss.gp
-set title "Velocity PDF, pooled components (gauss)" noenhanced
-set xlabel "v"
-set ylabel "P(v)"
+# Data: vpdf_gauss.csv (column 1 the series; one block per series)
+# Redraw: gnuplot -e "set terminal svg; set output 'vpdf_gauss.svg'" vpdf_gauss.gp
+set xlabel "velocity component v_α [√(k_BT/m)]" noenhanced
+set ylabel "probability density P(v_α) [√(m/k_BT)]" noenhanced
+set logscale y 10
+set format y "%g"
 set grid
-set key outside right top noenhanced
+set datafile separator comma
 set datafile missing "nan"
-set logscale y
-plot "data/vpdf_gauss_0.dat" using 1:2 with lines lw 4 lc rgb 'black' title "mt19937 (reference, 4 replicas)", \
-     "data/vpdf_gauss_1.dat" using 1:2 with lines dt 2 lw 2 lc rgb 'gray40' title "Maxwell–Boltzmann at k_BT", \
-     "data/vpdf_gauss_2.dat" using 1:2 with lines lw 2 title "philox4x32(7) distance", \
-     "data/vpdf_gauss_3.dat" using 1:2 with lines lw 2 dt 3 title "philox4x32(10) distance", \
-     "data/vpdf_gauss_4.dat" using 1:2 with lines lw 2 title "philox4x32(7) pair-step", \
-     "data/vpdf_gauss_5.dat" using 1:2 with lines lw 2 dt 3 title "philox4x32(10) pair-step", \
-     "data/vpdf_gauss_6.dat" using 1:2 with lines lw 2 title "saru distance", \
-     "data/vpdf_gauss_7.dat" using 1:2 with lines lw 2 title "saru pair-step", \
-     "data/vpdf_gauss_8.dat" using 1:2 with lines lw 2 title "splitmix64 distance", \
-     "data/vpdf_gauss_9.dat" using 1:2 with lines lw 2 title "splitmix64 pair-step", \
-     "data/vpdf_gauss_10.dat" using 1:2 with lines lw 2 title "tea32(1) distance", \
-     "data/vpdf_gauss_11.dat" using 1:2 with lines lw 2 dt 3 title "tea32(8) distance", \
-     "data/vpdf_gauss_12.dat" using 1:2 with lines lw 2 title "tea32(1) pair-step", \
-     "data/vpdf_gauss_13.dat" using 1:2 with lines lw 2 dt 3 title "tea32(8) pair-step", \
-     "data/vpdf_gauss_14.dat" using 1:2 with lines lw 2 title "tea64(1) distance", \
-     "data/vpdf_gauss_15.dat" using 1:2 with lines lw 2 dt 3 title "tea64(8) distance", \
-     "data/vpdf_gauss_16.dat" using 1:2 with lines lw 2 title "tea64(1) pair-step", \
-     "data/vpdf_gauss_17.dat" using 1:2 with lines lw 2 dt 3 title "tea64(8) pair-step", \
-     "data/vpdf_gauss_18.dat" using 1:2 with lines lw 2 title "threefry2x64(13) distance", \
-     "data/vpdf_gauss_19.dat" using 1:2 with lines lw 2 dt 3 title "threefry2x64(20) distance", \
-     "data/vpdf_gauss_20.dat" using 1:2 with lines lw 2 title "threefry2x64(13) pair-step", \
-     "data/vpdf_gauss_21.dat" using 1:2 with lines lw 2 dt 3 title "threefry2x64(20) pair-step"
+set key inside top right noenhanced opaque box samplen 2 spacing 1.1 font ',10'
+set title "Velocity PDF, pooled components (gauss)" noenhanced
+plot "vpdf_gauss.csv" index 0 using 2:3 with lines lw 4 lc rgb 'black' title "mt19937 (reference, 4 replicas)", \
+     "vpdf_gauss.csv" index 1 using 2:3 with lines dt 2 lw 2 lc rgb '#777777' title "Maxwell–Boltzmann at k_BT", \
+     "vpdf_gauss.csv" index 2 using 2:3 with lines lw 2 lc rgb '#009E73' title "philox4x32(7) distance", \
+     "vpdf_gauss.csv" index 3 using 2:3 with lines lw 2 lc rgb '#009E73' title "philox4x32(7) pair-step", \
+     "vpdf_gauss.csv" index 4 using 2:3 with lines lw 2 lc rgb '#D55E00' title "saru distance", \
+     "vpdf_gauss.csv" index 5 using 2:3 with lines lw 2 lc rgb '#D55E00' title "saru pair-step"
