@@ -316,8 +316,9 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
   for (const auto& d : dists) {
     md << "### " << d << "\n\n" << observables_markdown(a, d) << "\n";
     for (const auto& [n, alt] : {std::pair{"temperature_shift_vs_rounds_", "temperature shift vs rounds"},
-                                 std::pair{"vpdf_", "velocity PDF"}, std::pair{"msd_", "MSD"},
-                                 std::pair{"rdf_", "g(r)"}})
+                                 std::pair{"vpdf_", "velocity PDF"}, std::pair{"vpdf_difference_", "velocity PDF against MT"},
+                                 std::pair{"msd_", "MSD"}, std::pair{"msd_difference_", "MSD against MT"},
+                                 std::pair{"rdf_", "g(r)"}, std::pair{"rdf_difference_", "g(r) against MT"}})
       if (have(n + d)) md << chart(n + d, std::string(alt) + ", " + d);
   }
 

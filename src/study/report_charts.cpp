@@ -8,6 +8,7 @@
 #include <sstream>
 #include <vector>
 
+#include "dpdrng/stats/summary.hpp"
 #include "dpdrng/study/report.hpp"
 #include "report_chart.hpp"
 #include "report_common.hpp"
@@ -358,6 +359,34 @@ const std::vector<Curve>& curves() {
   return c;
 }
 
+// The variants a curve chart draws: each family's fewest rounds, then its most rounds, up to `room`.
+std::vector<const VariantReport*> curve_variants(const Analysis& a, const std::string& dist, std::size_t room) {
+  std::vector<const VariantReport*> fewest, most;
+  for (const auto& [fam, vs] : families(a, dist)) {
+    const VariantReport* lo = nullptr;
+    const VariantReport* hi = nullptr;
+    for (const auto* v : vs) {
+      if (v->cells.empty()) continue;
+      if (!lo || v->key.rounds < lo->key.rounds) lo = v;
+      if (!hi || v->key.rounds > hi->key.rounds) hi = v;
+    }
+    if (lo) fewest.push_back(lo);
+    if (hi && hi != lo) most.push_back(hi);
+  }
+  fewest.insert(fewest.end(), most.begin(), most.end());
+  if (fewest.size() > room) fewest.resize(room);
+  return fewest;
+}
+
+// The replicas' values of one bin of a curve (cells whose curve has another length are left out).
+std::vector<double> bin_values(const std::vector<const CellResult*>& cells, const std::string& name, std::size_t i,
+                               std::size_t size) {
+  std::vector<double> v;
+  for (const auto* c : cells)
+    if (const auto* s = c->find_series(name); s && s->size() == size) v.push_back((*s)[i]);
+  return v;
+}
+
 // The reference (thick, black) and each family's fewest rounds, where a difference would show; then their most
 // rounds while the panel holds fewer than six series.
 Chart overlay(const Analysis& a, const std::string& dist, const Curve& k) {
@@ -377,25 +406,61 @@ Chart overlay(const Analysis& a, const std::string& dist, const Curve& k) {
         "using 2:3 with lines lw 4 lc rgb 'black'");
     if (*k.extra_series) add(*ref, "Maxwell–Boltzmann at k_BT", k.extra_series, "using 2:3 with lines dt 2 lw 2 lc rgb '#777777'");
   }
-  std::vector<const VariantReport*> fewest, most;
-  for (const auto& [fam, vs] : families(a, dist)) {
-    const VariantReport* lo = nullptr;
-    const VariantReport* hi = nullptr;
-    for (const auto* v : vs) {
-      if (v->cells.empty()) continue;
-      if (!lo || v->key.rounds < lo->key.rounds) lo = v;
-      if (!hi || v->key.rounds > hi->key.rounds) hi = v;
+  std::map<std::string, int> of_family;  // a family's second line (its most rounds) dotted
+  for (const auto* v : curve_variants(a, dist, kMaxSeries - c.lines.size()))
+    add(*v, v->key.label_and_seeding(), k.ys,
+        "using 2:3 with lines lw 2 dt " + std::to_string(1 + 2 * of_family[v->key.generator + v->key.seeding_name()]++) +
+            " " + detail::colour_style(v->key.generator));
+  return c;
+}
+
+// Where curves overlap, their difference: each variant's mean curve against the reference's, relative, in %, with
+// the 95 % CI of the difference of two means (Welch), over the bins where the reference is at least `floor` of its
+// largest value (the velocity PDF's tails and g(r) inside the core carry no relative information).
+Chart difference(const Analysis& a, const std::string& dist, const Curve& k, double floor) {
+  Chart c{std::string(k.name) + "_difference_" + dist,
+          std::string(k.title) + ": relative difference from MT19937, 95 % CI (" + dist + ")", k.x,
+          Axis{"difference from MT19937", "%"}, {k.xs, "difference_pct", "ci_low_pct", "ci_high_pct"}};
+  c.x.scale = k.x.scale;
+  const VariantReport* ref = reference(a, dist);
+  if (!ref) return c;
+  const auto xs = detail::mean_series(ref->cells, k.xs), rm = detail::mean_series(ref->cells, k.ys);
+  if (xs.empty() || rm.size() != xs.size()) return c;
+  const double top = *std::max_element(rm.begin(), rm.end());
+  c.extra = "set arrow 1 from graph 0, first 0 to graph 1, first 0 nohead lw 1 lc rgb 'black'\n";
+  constexpr double kCurveShown = 20;  // % : the differences a good generator's could be confused with
+  std::vector<std::string> beyond;
+  std::map<std::string, int> of_family;  // a family's second line (its most rounds) dashed, open points
+  for (const auto* v : curve_variants(a, dist, kMaxSeries)) {
+    const bool second = of_family[v->key.generator + v->key.seeding_name()]++ > 0;
+    Line l{v->key.label_and_seeding(),
+           std::string("using 2:3:4:5 with yerrorlines lw 1.5 ps 0.6 ") + (second ? "dt 2 pt 6 " : "pt 7 ") +
+               detail::colour_style(v->key.generator),
+           {}, {}};
+    for (std::size_t i = 0; i < xs.size(); ++i) {
+      const auto vv = bin_values(v->cells, k.ys, i, xs.size()), rv = bin_values(ref->cells, k.ys, i, xs.size());
+      const double r = stats::mean(rv);
+      if (vv.size() < 2 || rv.size() < 2 || !(r > floor * top) || (k.x.scale != Scale::linear && xs[i] <= 0)) continue;
+      const double sv = stats::sample_sd(vv), sr = stats::sample_sd(rv);
+      const double a2 = sv * sv / double(vv.size()), b2 = sr * sr / double(rv.size()), se = std::sqrt(a2 + b2);
+      const double dof = se > 0 ? std::pow(a2 + b2, 2) / (a2 * a2 / double(vv.size() - 1) + b2 * b2 / double(rv.size() - 1))
+                                : double(vv.size() + rv.size() - 2);
+      const double d = 100 * (stats::mean(vv) - r) / r, h = 100 * stats::t_half_width_factor(dof, 0.95) * se / r;
+      l.rows.push_back({xs[i], d, d - h, d + h});
     }
-    if (lo) fewest.push_back(lo);
-    if (hi && hi != lo) most.push_back(hi);
+    // A variant far off (64TEA(1): +10 000 % in the PDF's tails) would flatten the others: named, not drawn.
+    double furthest = 0;
+    for (const auto& r : l.rows) furthest = std::max(furthest, std::abs(r[1]));
+    if (furthest > kCurveShown)
+      beyond.push_back(v->key.label_and_seeding());
+    else if (!l.rows.empty())
+      c.lines.push_back(std::move(l));
   }
-  for (const auto* v : fewest)
-    if (c.lines.size() < kMaxSeries)
-      add(*v, v->key.label_and_seeding(), k.ys, "using 2:3 with lines lw 2 " + detail::colour_style(v->key.generator));
-  for (const auto* v : most)
-    if (c.lines.size() < kMaxSeries)
-      add(*v, v->key.label_and_seeding(), k.ys,
-          "using 2:3 with lines lw 2 dt 3 " + detail::colour_style(v->key.generator));
+  if (!beyond.empty()) {
+    std::string names;
+    for (const auto& b : beyond) names += (names.empty() ? "" : ", ") + b;
+    c.title += "; beyond ±" + detail::num(kCurveShown) + " %, not drawn: " + names;
+  }
   return c;
 }
 
@@ -420,6 +485,11 @@ std::vector<std::string> write_charts(const Analysis& a, const std::vector<CellR
     charts.push_back(cost_rounds(a, dist));
     for (const char* test : {"chi2", "ttest"}) charts.push_back(pass_rounds(a, dist, test));
     for (const auto& k : curves()) charts.push_back(overlay(a, dist, k));
+    // The curves that overlap at the chart's scale, as differences from the reference: the velocity PDF where
+    // it is at least 1e-3 of its peak, g(r) where g_ref ≥ 0.1 of its peak (outside the core), the MSD everywhere.
+    for (const auto& [name, floor] : {std::pair{"vpdf", 1e-3}, std::pair{"rdf", 0.1}, std::pair{"msd", 0.0}})
+      for (const auto& k : curves())
+        if (std::string(k.name) == name) charts.push_back(difference(a, dist, k, floor));
   }
   const bool run = detail::has_gnuplot();
   if (!run && log) *log << "[report] gnuplot not found: chart scripts written, not rendered\n";

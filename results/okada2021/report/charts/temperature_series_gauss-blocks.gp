@@ -9,7 +9,7 @@ set datafile missing "nan"
 set key inside top right noenhanced opaque box samplen 2 spacing 1.1 font ',10'
 set title "Kinetic temperature against the step, replica mean (gauss-blocks)" noenhanced
 plot "temperature_series_gauss-blocks.csv" index 0 using 2:3 with lines lw 4 lc rgb 'black' title "mt19937 (reference, 16 replicas)", \
-     "temperature_series_gauss-blocks.csv" index 1 using 2:3 with lines lw 2 lc rgb '#0072B2' title "tea32(1) distance", \
-     "temperature_series_gauss-blocks.csv" index 2 using 2:3 with lines lw 2 lc rgb '#E69F00' title "tea64(1) distance", \
+     "temperature_series_gauss-blocks.csv" index 1 using 2:3 with lines lw 2 dt 1 lc rgb '#0072B2' title "tea32(1) distance", \
+     "temperature_series_gauss-blocks.csv" index 2 using 2:3 with lines lw 2 dt 1 lc rgb '#E69F00' title "tea64(1) distance", \
      "temperature_series_gauss-blocks.csv" index 3 using 2:3 with lines lw 2 dt 3 lc rgb '#0072B2' title "tea32(32) distance", \
      "temperature_series_gauss-blocks.csv" index 4 using 2:3 with lines lw 2 dt 3 lc rgb '#E69F00' title "tea64(32) distance"

@@ -14,8 +14,8 @@ set datafile missing "nan"
 set key inside top right noenhanced opaque box samplen 2 spacing 1.1 font ',10'
 set title "Mean squared displacement (gauss-blocks)" noenhanced
 plot "msd_gauss-blocks.csv" index 0 using 2:3 with lines lw 4 lc rgb 'black' title "mt19937 (reference, 4 replicas)", \
-     "msd_gauss-blocks.csv" index 1 using 2:3 with lines lw 2 lc rgb '#009E73' title "philox4x32(7) distance", \
-     "msd_gauss-blocks.csv" index 2 using 2:3 with lines lw 2 lc rgb '#009E73' title "philox4x32(7) pair-step", \
-     "msd_gauss-blocks.csv" index 3 using 2:3 with lines lw 2 lc rgb '#D55E00' title "saru distance", \
-     "msd_gauss-blocks.csv" index 4 using 2:3 with lines lw 2 lc rgb '#D55E00' title "saru pair-step", \
-     "msd_gauss-blocks.csv" index 5 using 2:3 with lines lw 2 lc rgb '#56B4E9' title "splitmix64 distance"
+     "msd_gauss-blocks.csv" index 1 using 2:3 with lines lw 2 dt 1 lc rgb '#009E73' title "philox4x32(7) distance", \
+     "msd_gauss-blocks.csv" index 2 using 2:3 with lines lw 2 dt 1 lc rgb '#009E73' title "philox4x32(7) pair-step", \
+     "msd_gauss-blocks.csv" index 3 using 2:3 with lines lw 2 dt 1 lc rgb '#D55E00' title "saru distance", \
+     "msd_gauss-blocks.csv" index 4 using 2:3 with lines lw 2 dt 1 lc rgb '#D55E00' title "saru pair-step", \
+     "msd_gauss-blocks.csv" index 5 using 2:3 with lines lw 2 dt 1 lc rgb '#56B4E9' title "splitmix64 distance"
