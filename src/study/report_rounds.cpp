@@ -113,38 +113,37 @@ std::string rounds_figures_csv(const std::vector<RoundsRow>& rows) {
 
 namespace {
 
+// Whose a chart line is: a generator and its seeding, or the reference's level (seeding empty).
+struct Origin {
+  std::string generator, seeding;
+};
+
 // With several seedings, each (component) panel splits into one per seeding, each generator's line in its
 // seeding's panel titled by the generator alone and the reference's level in every panel of its component: the
-// panels then hold one line per generator, within six. A line's `also` carries "generator\tseeding" until here.
-void by_seeding(detail::Chart& c) {
+// panels then hold one line per generator, within six. `origins` runs parallel to the chart's lines.
+void by_seeding(detail::Chart& c, const std::vector<Origin>& origins) {
   std::vector<std::string> seedings;
-  for (const auto& l : c.lines) {
-    const std::string s = l.also.empty() ? "" : l.also.substr(l.also.find('\t') + 1);
-    if (!s.empty() && std::find(seedings.begin(), seedings.end(), s) == seedings.end()) seedings.push_back(s);
-  }
-  if (seedings.size() < 2) {
-    for (auto& l : c.lines) l.also.clear();
-    return;
-  }
+  for (const auto& o : origins)
+    if (!o.seeding.empty() && std::find(seedings.begin(), seedings.end(), o.seeding) == seedings.end())
+      seedings.push_back(o.seeding);
+  if (seedings.size() < 2) return;
   const std::vector<std::string> components = c.panels.empty() ? std::vector<std::string>{""} : c.panels;
   c.panels.clear();
   for (const auto& comp : components)
     for (const auto& s : seedings) c.panels.push_back((comp.empty() ? "" : comp + ", ") + s + " seeding");
   std::vector<detail::Line> out;
-  for (auto& l : c.lines) {
+  for (std::size_t k = 0; k < c.lines.size(); ++k) {
+    detail::Line& l = c.lines[k];
     const std::size_t first = l.panel * seedings.size();
-    if (l.also.empty()) {  // the reference's level, in each seeding's panel
+    if (origins[k].seeding.empty()) {  // the reference's level, in each seeding's panel
       for (std::size_t s = 0; s < seedings.size(); ++s) {
         out.push_back(l);
         out.back().panel = first + s;
       }
       continue;
     }
-    const std::size_t tab = l.also.find('\t');
-    const std::string seeding = l.also.substr(tab + 1);
-    l.title = l.also.substr(0, tab);
-    l.panel = first + std::size_t(std::find(seedings.begin(), seedings.end(), seeding) - seedings.begin());
-    l.also.clear();
+    l.title = origins[k].generator;
+    l.panel = first + std::size_t(std::find(seedings.begin(), seedings.end(), origins[k].seeding) - seedings.begin());
     out.push_back(std::move(l));
   }
   c.lines = std::move(out);
@@ -157,6 +156,7 @@ std::vector<std::string> write_rounds_charts(const std::vector<RoundsRow>& rows,
   // One chart per figure and noise; a line per generator × seeding × observable, the reference as a level.
   std::map<std::string, detail::Chart> charts;
   std::map<std::string, std::map<std::string, detail::Line>> lines;
+  std::map<std::string, std::map<std::string, Origin>> origins;  // beside `lines`, by the same keys
   for (const auto& r : rows) {
     const RoundsFigure* f = nullptr;
     for (const auto& s : rounds_figure_specs())
@@ -187,7 +187,7 @@ std::vector<std::string> write_rounds_charts(const std::vector<RoundsRow>& rows,
     auto& l = lines[name][title + "\t" + std::to_string(panel)];
     l.title = title;
     l.panel = panel;
-    l.also = k.reference ? "" : k.generator + "\t" + k.seeding_name();  // read (and cleared) by by_seeding
+    origins[name][title + "\t" + std::to_string(panel)] = {k.generator, k.reference ? "" : k.seeding_name()};
     if (k.reference) {
       // Its level is an annotation of each panel, named once in the key (not one of the panel's series).
       l.title = "";
@@ -211,16 +211,20 @@ std::vector<std::string> write_rounds_charts(const std::vector<RoundsRow>& rows,
   const bool run = detail::has_gnuplot();
   std::vector<std::string> made;
   for (auto& [name, c] : charts) {
+    const auto is_level = [&](const std::string& key) { return origins[name][key].seeding.empty(); };
     double most = 1;  // the reference's level spans the rounds drawn
     for (auto& [t, l] : lines[name])
-      for (const auto& row : l.rows) most = l.style.find("yerror") != std::string::npos ? std::max(most, row[0]) : most;
+      if (!is_level(t))
+        for (const auto& row : l.rows) most = std::max(most, row[0]);
     double lo = INFINITY, hi = 0;
+    std::vector<Origin> order;
     for (auto& [t, l] : lines[name]) {
-      if (l.style.find("yerror") == std::string::npos) l.rows.back()[0] = most;
+      if (is_level(t)) l.rows.back()[0] = most;
       for (const auto& row : l.rows) lo = std::min(lo, row[1]), hi = std::max(hi, row[1]);
       c.lines.push_back(std::move(l));
+      order.push_back(origins[name][t]);
     }
-    by_seeding(c);
+    by_seeding(c, order);
     // A log axis only where the values span a decade (64TEA(1)'s components at tens of k_BT); otherwise the
     // few-% differences stay visible on a linear one.
     if (c.y.unit == "k_BT" && !(lo > 0 && hi / lo > 10)) c.y.scale = detail::Scale::linear;
