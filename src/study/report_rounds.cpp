@@ -211,7 +211,8 @@ std::vector<std::string> write_rounds_charts(const std::vector<RoundsRow>& rows,
   const bool run = detail::has_gnuplot();
   std::vector<std::string> made;
   for (auto& [name, c] : charts) {
-    const auto is_level = [&](const std::string& key) { return origins[name][key].seeding.empty(); };
+    auto& chart_origins = origins[name];  // a named reference: some compilers cannot capture a structured binding
+    const auto is_level = [&](const std::string& key) { return chart_origins[key].seeding.empty(); };
     double most = 1;  // the reference's level spans the rounds drawn
     for (auto& [t, l] : lines[name])
       if (!is_level(t))
