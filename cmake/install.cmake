@@ -5,13 +5,14 @@ include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
 set(DPDRNG_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/dpdrng)
-install(TARGETS dpdrng_rng dpdrng_common dpdrng_rng_registry dpdrng_stats dpdrng_dpd dpdrng_study
+install(TARGETS dpdrng_plugin dpdrng_rng dpdrng_common dpdrng_rng_registry dpdrng_stats dpdrng_dpd dpdrng_study
   EXPORT dpdrngTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(TARGETS dpdrng RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 # The CLI's headers stay private to the executable.
 install(DIRECTORY include/dpdrng/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/dpdrng
   FILES_MATCHING PATTERN "*.hpp" PATTERN "cli" EXCLUDE)
-install(FILES ${DPDRNG_GENERATED_INCLUDE}/dpdrng/version.hpp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/dpdrng)
+install(FILES ${DPDRNG_GENERATED_INCLUDE}/dpdrng/version.hpp include/dpdrng/plugin.h
+  DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/dpdrng)
 install(EXPORT dpdrngTargets NAMESPACE dpdrng:: DESTINATION ${DPDRNG_CMAKE_DIR})
 
 configure_package_config_file(cmake/dpdrngConfig.cmake.in ${PROJECT_BINARY_DIR}/dpdrngConfig.cmake

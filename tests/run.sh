@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The README's test command: installs what is missing (Debian packages), builds, runs the test suite, and builds
-# and runs examples/pair_force against the package installed into a temporary prefix.
+# and runs examples/pair_force and the example plug-ins (examples/plugin_*) against the package installed into a
+# temporary prefix.
 # DPDRNG_SANITIZE=1 also builds and runs the whole suite under AddressSanitizer + UBSan, and DPDRNG_PORTABLE=1
 # builds the portable preset's dpdrng and checks its results bit for bit against the release build's
 # (tests/portable.sh; x86-64 only). .ci/run sets both. Any failure in a build, a ctest run or the check ends the
@@ -28,6 +29,17 @@ cmake --install build/release --prefix "$prefix/install" >/dev/null
 cmake -S examples/pair_force -B "$prefix/build" -DCMAKE_PREFIX_PATH="$prefix/install" >/dev/null
 cmake --build "$prefix/build" -j "$jobs"
 "$prefix/build/pair_force"
+step "the example plug-ins built against it, run by the installed dpdrng"
+# examples/plugin_tea32 (32TEA(4) in plain C) gives the built-in's stream bit for bit; examples/plugin_fmix64
+# (two words a block) runs a short simulation.
+cmake -S examples/plugin_tea32 -B "$prefix/tea32" -DCMAKE_PREFIX_PATH="$prefix/install" -DTEA32_CYCLES=4 >/dev/null
+cmake --build "$prefix/tea32" -j "$jobs"
+cmake -S examples/plugin_fmix64 -B "$prefix/fmix64" -DCMAKE_PREFIX_PATH="$prefix/install" >/dev/null
+cmake --build "$prefix/fmix64" -j "$jobs"
+installed="$prefix/install/bin/dpdrng"
+cmp <("$installed" gen -g "ext:$prefix/tea32/libtea32.so" --count 100000 --format raw) \
+    <("$installed" gen -g tea32 -r 4 --count 100000 --format raw)
+"$installed" simulate -g "ext:$prefix/fmix64/libfmix64.so" -n 256 --steps 200 --equilibrate 50 -q >/dev/null
 if [[ "${DPDRNG_SANITIZE:-0}" == 1 ]]; then
   step "ASan+UBSan build"
   cmake --preset asan -DDPDRNG_BUILD_TESTS=ON >/dev/null

@@ -12,6 +12,7 @@ void time_scalar_hash(benchmark::State& state, const rng::GeneratorSpec& spec, M
     case rng::Family::splitmix64: return time_scalar_hash_of<rng::Family::splitmix64>(state, spec, mode);
     case rng::Family::saru: return time_scalar_hash_of<rng::Family::saru>(state, spec, mode);
     case rng::Family::defect: return time_scalar_hash_of<rng::Family::defect>(state, spec, mode);
+    case rng::Family::plugin: return time_scalar_hash_of<rng::Family::plugin>(state, spec, mode);
     case rng::Family::mt19937: break;
   }
   rng::throw_not_keyed_hash(spec.name);

@@ -8,5 +8,6 @@ namespace dpdrng::cli::bench_rng {
 template void time_scalar_hash_of<rng::Family::splitmix64>(benchmark::State&, const rng::GeneratorSpec&, Mode);
 template void time_scalar_hash_of<rng::Family::saru>(benchmark::State&, const rng::GeneratorSpec&, Mode);
 template void time_scalar_hash_of<rng::Family::defect>(benchmark::State&, const rng::GeneratorSpec&, Mode);
+template void time_scalar_hash_of<rng::Family::plugin>(benchmark::State&, const rng::GeneratorSpec&, Mode);
 
 }  // namespace dpdrng::cli::bench_rng

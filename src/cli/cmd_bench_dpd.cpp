@@ -227,6 +227,8 @@ Oversubscribed measure_oversubscribed(const std::string& scene, Case k, int repe
 
 Case with_generator(dpd::WaterConfig c, const std::string& name, int rounds) {
   c.generator = rng::validated({name, rounds});
+  // A plug-in by its own name: a table row, not a path.
+  if (rng::is_plugin(name)) return {"ext:" + rng::load_plugin(name).name, c};
   return {rng::describe(c.generator), c};
 }
 

@@ -43,6 +43,7 @@ struct BenchArgs {
   int repetitions = 5;
   std::string filter = ".";
   std::size_t buffer = 2048;
+  std::vector<std::string> plugins;  // ext:PATH rows beside the built-ins
 };
 
 const char* mode_name(Mode m) {
@@ -65,7 +66,7 @@ struct Row {
   bool std64 = false;  // the std::mt19937_64 reference, outside the registry
 };
 
-std::vector<Row> rows() {
+std::vector<Row> rows(const std::vector<std::string>& plugins) {
   std::vector<Row> out;
   auto add = [&](const std::string& name, int rounds) {
     GeneratorSpec s;
@@ -83,6 +84,10 @@ std::vector<Row> rows() {
   }
   Row std64{"std::mt19937_64", GeneratorSpec{}, true};
   out.push_back(std64);
+  for (const auto& name : plugins) {
+    const GeneratorSpec s = rng::validated({name, 0});
+    out.push_back({"ext:" + rng::load_plugin(name).name, s});
+  }
   return out;
 }
 
@@ -246,9 +251,13 @@ void run_bench(const BenchArgs& a) {
   } catch (const std::regex_error&) {
     throw InputError("--filter: not a valid regular expression: " + quote_input(a.filter));
   }
+  for (const auto& name : a.plugins) {
+    if (!rng::is_plugin(name)) throw InputError("--generator: '" + name + "' is not ext:PATH (the built-ins are rows already)");
+    rng::check_seeding({name, 0}, rng::Seeding::counter);
+  }
   begin_work();
 
-  const std::vector<Row> table = rows();
+  const std::vector<Row> table = rows(a.plugins);
   std::vector<Case> cases;
   std::map<std::string, std::size_t> index;
   for (std::size_t r = 0; r < table.size(); ++r) {
@@ -356,7 +365,8 @@ const bool registered = register_command(40, [](CLI::App& root) {
   CLI::App* sub = bench.add_subcommand("rng", "ns per 64-bit output for every generator and round count");
   sub->footer(
       "Rows: tea32/tea64 at 1,2,3,4,5,6,8,16,32 rounds, philox4x32 at 7 and 10, threefry2x64 at 13 and 20,\n"
-      "splitmix64, saru, and the references mt19937 (the paper's) and std::mt19937_64.\n"
+      "splitmix64, saru, and the references mt19937 (the paper's) and std::mt19937_64; -g ext:PATH adds a\n"
+      "plug-in's row (labelled ext:<its name>; its batch mode is one counter() call per buffer).\n"
       "Modes: scalar = independent counter-mode calls one at a time, each output forced into a register, so\n"
       "the CPU may overlap calls but the compiler cannot vectorise them; batch = fill_stream() into a buffer\n"
       "(SIMD kernels for tea32, tea64, philox4x32, threefry2x64, splitmix64); scalar-/batch- uniform and gauss =\n"
@@ -372,6 +382,8 @@ const bool registered = register_command(40, [](CLI::App& root) {
   sub->add_option("--filter", args->filter, "regular expression on 'label/mode', e.g. 'tea32\\(8\\)|philox'")
       ->capture_default_str();
   add_integer(*sub, "--buffer", args->buffer, "outputs per batched call (default fits in L1)", {16, 1u << 24});
+  sub->add_option("--generator,-g", args->plugins, "a plug-in (ext:PATH) timed beside the built-ins; repeatable")
+      ->type_name("ext:PATH");
   sub->callback([args] { run_bench(*args); });
 });
 

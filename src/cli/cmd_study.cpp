@@ -176,6 +176,14 @@ void report(const std::string& dir, bool charts, const std::string& calibration)
   std::cout << md.string() << "\n";
 }
 
+// A config that names a plug-in loads native code: the command line may allow a library the config does not pin.
+void add_allow_plugin(CLI::App& app) {
+  app.add_option("--allow-plugin")
+      ->description("let the config load this plug-in library (ext:PATH) without a sha256 pin; repeatable")
+      ->type_name("PATH")
+      ->each([](const std::string& path) { allow_plugin(path); });
+}
+
 const bool registered = register_command(60, [](CLI::App& root) {
   CLI::App& g = group(root, "study", "run a sweep of DPD runs and tests, merge shards, and report");
   g.footer("A study: generators x rounds x distributions x seedings x replicas (x dt), each cell one DPD run with\n"
@@ -189,6 +197,7 @@ const bool registered = register_command(60, [](CLI::App& root) {
   r->add_option("--shard", ra->shard, "run only shard k of N (1-based, round-robin over the cells), e.g. 3/16")
       ->capture_default_str();
   add_integer(*r, "--threads,-t", ra->threads, "cells run side by side (0 = all cores)", {0, 1024});
+  add_allow_plugin(*r);
   r->callback([ra] { run(*ra); });
 
   auto dirs = std::make_shared<std::vector<std::string>>();
@@ -196,6 +205,7 @@ const bool registered = register_command(60, [](CLI::App& root) {
   CLI::App* m = g.add_subcommand("merge", "combine the cells of several result directories (shards) into one");
   m->add_option("dirs", *dirs, "result directories made with the same config")->required();
   m->add_option("--out,-o", *out, "target directory (default: the first one)")->check(non_empty_path());
+  add_allow_plugin(*m);
   m->callback([dirs, out] { merge(*dirs, *out); });
 
   auto dir = std::make_shared<std::string>();
@@ -207,6 +217,7 @@ const bool registered = register_command(60, [](CLI::App& root) {
   p->add_option("--calibration", *calibration,
                 "calibration.json (or a directory of them) for the detection limit; default DIR/../calibration")
       ->check(non_empty_path());
+  add_allow_plugin(*p);
   p->callback([dir, no_charts, calibration] { report(*dir, !*no_charts, *calibration); });
 
   auto ca = std::make_shared<CalibrateArgs>();
@@ -240,6 +251,7 @@ const bool registered = register_command(60, [](CLI::App& root) {
            "start no cell after this many minutes (0: no limit); rerun the same command to go on", {0, 1e6, false, false});
   k->add_flag("--json", ca->json, "print calibration.json on standard output");
   k->add_flag("--no-charts", ca->no_charts, "skip gnuplot");
+  add_allow_plugin(*k);
   k->callback([ca, variance] {
     ca->variance_given = variance->count() > 0;
     calibrate_cmd(*ca);
@@ -250,6 +262,7 @@ const bool registered = register_command(60, [](CLI::App& root) {
   CLI::App* c = g.add_subcommand("cells", "list the cell ids of a config (or of one shard) without running them");
   c->add_option("config", *cfg, "study config (TOML)")->required();
   c->add_option("--shard", *shard, "k/N")->capture_default_str();
+  add_allow_plugin(*c);
   c->callback([cfg, shard] {
     const StudyConfig config = load_config(*cfg);
     const Shard part = parse_shard(*shard);

@@ -10,7 +10,9 @@ void GeneratorOptions::add_to(CLI::App& app) {
   std::string names;
   for (const auto& g : rng::generator_table())
     names += (names.empty() ? "" : ", ") + (g.name == "defect" ? rng::defect_syntax() : std::string(g.name));
-  app.add_option("--generator,-g", name, "generator: " + names)->capture_default_str();
+  app.add_option("--generator,-g", name,
+                 "generator: " + names + ", or ext:PATH (your own hash in a shared library: dpdrng/plugin.h)")
+      ->capture_default_str();
   add_integer(app, "--rounds,-r", rounds,
               "round count (omitted: the generator's default; tea32/tea64: 1..64; see `dpdrng list`)", {1, kIntMax});
   key_option = app.add_option("--key", key, "four 32-bit key words k0,k1,k2,k3 (TEA: the paper's 3,4,5,6)")

@@ -135,8 +135,8 @@ void WaterConfig::validate() const {
     bad("density", num(density) + " with pairs = cells: " + num(cells) + " cells of width r_c for " +
                        std::to_string(particles) + " beads, more than 64 a bead: use pairs = all or a higher density");
   rng::validated(generator);  // names the generator and its round range in the error
-  rng::check_defect_seeding(generator, seeding);
   if (seeding == rng::Seeding::counter) bad("seeding", "'counter' makes streams; pair noise needs distance or pair-step");
+  rng::check_seeding(generator, seeding);
   if (distribution == rng::Distribution::uniform && feed != rng::Feed::halves)
     bad("feed", std::string(rng::to_string(feed)) + " applies to Gaussian noise only (uniform takes feed halves)");
   if (threads < 0) bad("threads", "must not be negative");

@@ -50,6 +50,9 @@ std::unique_ptr<DecomposedForces> make_decomposed_forces(const DecompNoise& nois
                      "' is a sequential stream, which cannot give two domains the same number without a message");
   if (rng::is_defect(spec.name) && rng::parse_defect(spec.name).lag1 != 0)
     throw InputError("decompose: a lag-1 defect is not supported (it needs the step in every seeding)");
+  // Every decomposition seeding but pair-step hashes a separation (grid and canonical included).
+  rng::check_seeding(spec, noise.seeding.kind == DecompSeedingKind::pair_step ? rng::Seeding::pair_step
+                                                                              : rng::Seeding::distance);
   switch (rng::family_of(spec.name)) {
     case rng::Family::tea32: return detail::make_decomposed<rng::Family::tea32>(spec, noise, kernel, domains);
     case rng::Family::tea64: return detail::make_decomposed<rng::Family::tea64>(spec, noise, kernel, domains);
@@ -59,6 +62,7 @@ std::unique_ptr<DecomposedForces> make_decomposed_forces(const DecompNoise& nois
     case rng::Family::splitmix64: return detail::make_decomposed<rng::Family::splitmix64>(spec, noise, kernel, domains);
     case rng::Family::saru: return detail::make_decomposed<rng::Family::saru>(spec, noise, kernel, domains);
     case rng::Family::defect: return detail::make_decomposed<rng::Family::defect>(spec, noise, kernel, domains);
+    case rng::Family::plugin: return detail::make_decomposed<rng::Family::plugin>(spec, noise, kernel, domains);
     case rng::Family::mt19937: break;
   }
   rng::throw_not_keyed_hash(spec.name);

@@ -13,6 +13,9 @@ template std::unique_ptr<DecomposedForces> make_decomposed<rng::Family::splitmix
 template std::unique_ptr<DecomposedForces> make_decomposed<rng::Family::saru>(const rng::GeneratorSpec&,
                                                                               const DecompNoise&, const DpdKernel&,
                                                                               const DomainGrid&);
+template std::unique_ptr<DecomposedForces> make_decomposed<rng::Family::plugin>(const rng::GeneratorSpec&,
+                                                                                const DecompNoise&, const DpdKernel&,
+                                                                                const DomainGrid&);
 template std::unique_ptr<DecomposedForces> make_decomposed<rng::Family::defect>(const rng::GeneratorSpec&,
                                                                                 const DecompNoise&, const DpdKernel&,
                                                                                 const DomainGrid&);

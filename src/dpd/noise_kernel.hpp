@@ -32,6 +32,9 @@ class NoiseKernelOf final : public NoiseKernel {
   std::size_t row(const RowBatch& b, int thread) override {
     const std::size_t m = b.m;
     Scratch& sc = scratch(thread, m);
+    if constexpr (kBatched) {
+      if (!b.tap[0]) return row_batched(b, sc);
+    }
     Block* blk = sc.blk.data();
     double *dxs = b.dx, *dys = b.dy, *dzs = b.dz, *r2s = b.r2;
     const std::uint32_t i = b.i;
@@ -65,6 +68,7 @@ class NoiseKernelOf final : public NoiseKernel {
   void pairs(const PairBatch& b, int thread) override {
     const std::size_t k = b.k;
     Scratch& sc = scratch(thread, k);
+    if constexpr (kBatched) return pairs_batched(b, sc);
     Block* blk = sc.blk.data();
     for (std::size_t t = 0; t < k; ++t) {
       const rng::PairInput p{b.i[t], b.j[t], b.dx[t], b.dy[t], b.dz[t], b.step};
@@ -93,9 +97,47 @@ class NoiseKernelOf final : public NoiseKernel {
 
  private:
   using Block = typename Noise::Block;
+  static constexpr bool kBatched = requires { requires Noise::kBatch; };
   struct Scratch {
     std::vector<Block> blk, blk2;  // the pairs' blocks; their second blocks (blocks feed)
+    std::vector<std::uint32_t> i, j;  // a batched generator's canonical pairs
+    std::vector<double> dx, dy, dz;
   };
+
+  // A batched generator is called once per batch and only for the pairs inside r_c (the other kernels hash every
+  // candidate, in SIMD lanes): the same blocks for the pairs whose ζ is used.
+  std::size_t row_batched(const RowBatch& b, Scratch& sc) {
+    std::size_t k = 0;
+    for (std::size_t t = 0; t < b.m; ++t) {
+      if (!(b.r2[t] < b.rc2)) continue;
+      b.j[k] = std::uint32_t(b.i + 1 + t);
+      b.dx[k] = b.dx[t], b.dy[k] = b.dy[t], b.dz[k] = b.dz[t], b.r2[k] = b.r2[t];
+      ++k;
+    }
+    sc.i.assign(k, b.i);
+    batch_zetas(sc, sc.i.data(), b.j, b.dx, b.dy, b.dz, b.step, k, b.zeta);
+    return k;
+  }
+
+  void pairs_batched(const PairBatch& b, Scratch& sc) {
+    const std::size_t k = b.k;
+    sc.i.resize(k), sc.j.resize(k), sc.dx.resize(k), sc.dy.resize(k), sc.dz.resize(k);
+    for (std::size_t t = 0; t < k; ++t) {
+      const rng::PairInput p = rng::canonical({b.i[t], b.j[t], b.dx[t], b.dy[t], b.dz[t], b.step});
+      sc.i[t] = p.i, sc.j[t] = p.j, sc.dx[t] = p.dx, sc.dy[t] = p.dy, sc.dz[t] = p.dz;
+    }
+    batch_zetas(sc, sc.i.data(), sc.j.data(), sc.dx.data(), sc.dy.data(), sc.dz.data(), b.step, k, b.zeta);
+    if (b.tap[0])
+      for (int w = 0; w < Noise::kWords; ++w)
+        for (std::size_t t = 0; t < k; ++t) b.tap[w][t] = sc.blk[t][w];
+  }
+
+  void batch_zetas(Scratch& sc, const std::uint32_t* i, const std::uint32_t* j, const double* dx, const double* dy,
+                   const double* dz, std::uint64_t step, std::size_t k, double* zeta) const {
+    noise_.raw_batch(i, j, dx, dy, dz, step, k, sc.blk.data(), false);
+    if (noise_.feed() == rng::Feed::blocks) noise_.raw_batch(i, j, dx, dy, dz, step, k, sc.blk2.data(), true);
+    noise_.zetas(sc.blk.data(), sc.blk2.data(), zeta, k);
+  }
 
   Scratch& scratch(int thread, std::size_t m) {
     Scratch& sc = scratch_[std::size_t(thread)];
@@ -114,10 +156,16 @@ class NoiseKernelOf final : public NoiseKernel {
       std::vector<Block> blk(kCalls), blk2(kCalls);
       for (std::size_t t = 0; t < kCalls; ++t) dx[t] = 0.9 - 4e-4 * t, dy[t] = 0.25 - 1e-4 * t, dz[t] = 1e-4 * t - 0.1;
       const bool two = noise.feed() == rng::Feed::blocks;
+      std::vector<std::uint32_t> is(kCalls, 7), js(kCalls);
+      for (std::size_t t = 0; t < kCalls; ++t) js[t] = std::uint32_t(8 + t);
       auto fill = [&] {
         if constexpr (Noise::kStream) noise.begin_step(kCalls);
-        for (std::size_t t = 0; t < kCalls; ++t)
-          blk[t] = noise.raw(rng::PairInput{7, std::uint32_t(8 + t), dx[t], dy[t], dz[t], 99}, t);
+        if constexpr (kBatched) {  // as the pair loop calls it: one call for the batch
+          noise.raw_batch(is.data(), js.data(), dx.data(), dy.data(), dz.data(), 99, kCalls, blk.data(), false);
+        } else {
+          for (std::size_t t = 0; t < kCalls; ++t)
+            blk[t] = noise.raw(rng::PairInput{7, std::uint32_t(8 + t), dx[t], dy[t], dz[t], 99}, t);
+        }
       };
       fill();  // warm-up, and real blocks for the ζ timing (the stream's second buffer too)
       if (two)

@@ -56,8 +56,11 @@ std::unique_ptr<PairForces> make_pair_forces(const WaterConfig& in, const DpdKer
     case rng::Family::splitmix64: return hashed<rng::Family::splitmix64>(cfg, kernel, n);
     case rng::Family::saru: return hashed<rng::Family::saru>(cfg, kernel, n);
     case rng::Family::defect:
-      rng::check_defect_seeding(cfg.generator, cfg.seeding);
+      rng::check_seeding(cfg.generator, cfg.seeding);
       return hashed<rng::Family::defect>(cfg, kernel, n);
+    case rng::Family::plugin:
+      rng::check_seeding(cfg.generator, cfg.seeding);
+      return hashed<rng::Family::plugin>(cfg, kernel, n);
     case rng::Family::mt19937: break;
   }
   rng::throw_not_keyed_hash(cfg.generator.name);

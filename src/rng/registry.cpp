@@ -41,7 +41,16 @@ constexpr std::array kGenerators{
 
 std::span<const GeneratorInfo> generator_table() { return kGenerators; }
 
+namespace {
+constexpr GeneratorInfo kPlugin{"ext", Family::plugin, 1, 1, 1, "a user's plug-in: no published analysis",
+                                "a keyed hash loaded from a shared library (dpdrng/plugin.h); name: ext:PATH", true};
+}  // namespace
+
 const GeneratorInfo& find_generator(std::string_view name) {
+  if (is_plugin(name)) {
+    load_plugin(name);
+    return kPlugin;
+  }
   if (is_defect(name)) {
     parse_defect(name);
     name = "defect";
@@ -84,6 +93,11 @@ void check_defect_seeding(const GeneratorSpec& spec, Seeding seeding) {
     throw InputError("'" + spec.name + "': a lag-1 defect correlates a pair's steps; use seeding pair-step");
   if (seeding != Seeding::distance && p.aniso != 0)
     throw InputError("'" + spec.name + "': an anisotropic defect reads the pair's separation; use seeding distance");
+}
+
+void check_seeding(const GeneratorSpec& spec, Seeding seeding) {
+  check_defect_seeding(spec, seeding);
+  if (is_plugin(spec.name)) check_plugin_seeding(load_plugin(spec.name), seeding);
 }
 
 Seeding parse_seeding(std::string_view name) {

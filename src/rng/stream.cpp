@@ -145,10 +145,16 @@ void fill_noise_hash(const G& g, Distribution dist, std::uint64_t start, std::ui
   }
 }
 
+// Streams hash a counter: a plug-in needs its counter entry.
+void check_counter(const GeneratorSpec& spec) {
+  if (is_plugin(spec.name)) check_plugin_seeding(load_plugin(spec.name), Seeding::counter);
+}
+
 }  // namespace
 
 int words_per_call(const GeneratorSpec& spec) {
   if (family_of(spec.name) == Family::mt19937) return 1;
+  check_counter(spec);
   return with_hash(spec, [](const auto& g) { return std::decay_t<decltype(g)>::kWords; });
 }
 
@@ -159,6 +165,7 @@ void fill_stream(const GeneratorSpec& spec, std::uint64_t start, std::uint64_t o
     for (auto& w : out) w = mt.next64();
     return;
   }
+  check_counter(spec);
   with_hash(spec, [&](const auto& g) { fill_hash(g, start, offset, out); });
 }
 
@@ -186,6 +193,7 @@ void fill_noise(const GeneratorSpec& spec, Distribution dist, std::uint64_t star
     }
     return;
   }
+  check_counter(spec);
   with_hash(spec, [&](const auto& g) { fill_noise_hash(g, dist, start, first_call, out); });
 }
 

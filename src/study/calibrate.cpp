@@ -59,7 +59,7 @@ using namespace calibration_detail;
 
 // Generators the study calls good: 10 and 20 rounds are Random123's defaults, with margin over the rounds that
 // pass BigCrush (Salmon et al. SC'11); SplitMix64 passes BigCrush (Steele et al. 2014).
-const std::vector<GeneratorEntry> kGood = {{"philox4x32", {10}, {}}, {"threefry2x64", {20}, {}}, {"splitmix64", {1}, {}}};
+const std::vector<GeneratorEntry> kGood = {{"philox4x32", {10}, {}, {}}, {"threefry2x64", {20}, {}, {}}, {"splitmix64", {1}, {}, {}}};
 
 struct Defect {
   std::string kind;
@@ -233,7 +233,7 @@ StudyConfig calibration_pool(const StudyConfig& config, const CalibrationPlan& p
   p.generators = kGood;
   p.reference_replicas = 0;  // the pool's replicas serve the reference and the generators alike
   for (const auto& d : defects_of(plan)) {
-    GeneratorEntry e{d.name(), {1}, {}};
+    GeneratorEntry e{d.name(), {1}, {}, {}};
     rng::validated({e.name, 0});  // InputError for an out-of-range size
     if (d.kind == "lag1") e.seedings = {rng::Seeding::pair_step};  // the step must be in the hash input
     if (d.kind == "aniso") e.seedings = {rng::Seeding::distance};  // the separation must be

@@ -231,7 +231,7 @@ StudyConfig at_size_pool(const StudyConfig& config, const CalibrationPlan& plan)
   p.generators.clear();
   for (const auto& g : config.generators)
     for (std::size_t k = 0; k < std::max<std::size_t>(g.rounds.size(), 1); ++k)
-      p.generators.push_back({"defect:key=" + std::to_string(p.generators.size()), {1}, g.seedings});
+      p.generators.push_back({"defect:key=" + std::to_string(p.generators.size()), {1}, g.seedings, {}});
   p.replicas = plan.null_studies * config.replicas;
   p.reference_replicas = p.replicas + plan.null_studies * (config.reference_replica_count() - config.replicas);
   p.source_text = "# The at-size calibration pool of study '" + config.name +

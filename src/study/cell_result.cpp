@@ -75,6 +75,8 @@ void write_cell(hid_t g, const CellResult& r) {
   // Only when the sweep names one: cells of studies without the factor keep their records byte for byte.
   if (!c.integrator.empty()) h5::write_attribute(g, "cell.integrator", c.integrator);
   if (c.gamma > 0) h5::write_attribute(g, "cell.gamma", c.gamma);
+  // A plug-in's identity: the digest of the library that made the cell.
+  if (rng::is_plugin(c.generator)) h5::write_attribute(g, "cell.generator_sha256", rng::load_plugin(c.generator).sha256);
   h5::write_attribute(g, "cell.replica", std::int64_t{c.replica});
   h5::write_attribute(g, "cell.reference", std::int64_t{c.reference});
   h5::write_attribute(g, "cell.nist", std::int64_t{c.nist});

@@ -11,6 +11,7 @@
 
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/common/numbers.hpp"
+#include "dpdrng/common/sha256.hpp"
 #include "dpdrng/dpd/bilayer.hpp"
 #include "dpdrng/rng/registry.hpp"
 #include "dpdrng/study/observables.hpp"
@@ -86,6 +87,38 @@ std::vector<rng::Seeding> valid_seedings(Section& s, const std::string& key, con
     if (seeding == rng::Seeding::counter) throw InputError("'counter' makes standalone streams, not pair noise");
     return seeding;
   });
+}
+
+std::set<std::string>& allowed_plugins() {
+  static std::set<std::string> allowed;
+  return allowed;
+}
+
+std::string canonical_file(const std::string& path) {
+  std::error_code ec;
+  const auto c = std::filesystem::canonical(path, ec);
+  if (ec) throw InputError("plug-in '" + path + "': " + ec.message());
+  return c.string();
+}
+
+// The digest of the library an ext: entry names, after its pin or the command line allowed it; then it loads.
+std::string consented_plugin(Section& g, const std::string& name) {
+  const std::string path = name.substr(rng::kPluginPrefix.size());
+  const std::string pinned = g.str("sha256", "");
+  std::string actual;
+  try {
+    actual = sha256_file(canonical_file(path));
+  } catch (const InputError& e) {
+    g.fail("name", e.what());
+  }
+  if (!pinned.empty() && pinned != actual)
+    g.fail("sha256", "pins " + pinned + " but '" + path + "' has " + actual +
+                         ": refusing to load a library other than the one the config names");
+  if (pinned.empty() && !allowed_plugins().contains(canonical_file(path)))
+    g.fail("name", "'" + name + "' loads native code: pin it with sha256 = \"" + actual +
+                       "\" in this entry (the library's digest now), or allow it for this run with --allow-plugin " +
+                       path);
+  return actual;
 }
 
 const rng::GeneratorInfo& known_generator(Section& s, const std::string& key, const std::string& name) {
@@ -169,8 +202,11 @@ nlohmann::json StudyConfig::canonical() const {
                                {"pairs", dpd::to_string(scene.pairs)}};
   if (!scene.is_bilayer()) scene_json["a"] = scene.a;  // the bilayer's a_ij are fixed by the scene
   nlohmann::json gens = nlohmann::json::array();
-  for (const auto& g : generators)
+  for (const auto& g : generators) {
     gens.push_back({{"name", g.name}, {"rounds", g.rounds}, {"seedings", names_of(g.seedings)}});
+    // A changed plug-in library changes the hash: a study refuses to resume or merge under another library.
+    if (!g.sha256.empty()) gens.back()["sha256"] = g.sha256;
+  }
   nlohmann::json j = {
       {"name", name},
       {"reference", reference},
@@ -203,6 +239,8 @@ nlohmann::json StudyConfig::canonical() const {
   if (scene.time > 0) j["scene"]["time"] = scene.time, j["scene"]["equilibrate_time"] = scene.equilibrate_time;
   return j;
 }
+
+void allow_plugin(const std::string& path) { allowed_plugins().insert(canonical_file(path)); }
 
 StudyConfig parse_config(const std::string& toml_text, const std::string& origin) {
   const toml::table root = parse_toml(toml_text, origin);
@@ -257,6 +295,10 @@ StudyConfig parse_config(const std::string& toml_text, const std::string& origin
     GeneratorEntry e;
     e.name = g.str("name", "");
     if (e.name.empty()) g.fail("name", "is required");
+    if (rng::is_plugin(e.name))
+      e.sha256 = consented_plugin(g, e.name);
+    else if (g.get("sha256"))
+      g.fail("sha256", "pins a plug-in library: '" + e.name + "' is a built-in generator");
     if (!known_generator(g, "name", e.name).keyed_hash)
       g.fail("name", "'" + e.name + "' is a stream, not a pair-keyed hash (it is the reference, always run)");
     for (long r : g.integers("rounds", 1, 1 << 20)) {
@@ -274,8 +316,12 @@ StudyConfig parse_config(const std::string& toml_text, const std::string& origin
     if (e.rounds.empty()) e.rounds.push_back(rng::validated(rng::GeneratorSpec{e.name, 0, rng::kPaperTeaKey}).rounds);
     if (g.get("seedings")) e.seedings = valid_seedings(g, "seedings", {});
     g.finish();
-    for (const auto& prev : c.generators)
+    for (const auto& prev : c.generators) {
       if (prev.name == e.name) g.fail("name", "'" + e.name + "' appears twice; list all its rounds in one entry");
+      if (generator_tag(prev.name) == generator_tag(e.name))
+        g.fail("name", "'" + e.name + "' and '" + prev.name + "' would share the cell ids " + generator_tag(e.name) +
+                           "-…: give the libraries different file names");
+    }
     c.generators.push_back(std::move(e));
   }
   sw.finish();

@@ -1,7 +1,9 @@
 #include "dpdrng/study/sweep.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
+#include <filesystem>
 
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/common/numbers.hpp"
@@ -51,8 +53,17 @@ IntegratorSpec integrator_of(const std::string& name, const SceneParams& scene) 
 
 // The feed enters the id only when it is not halves, the integrator only when the sweep names one: cells of
 // stores written without them keep their ids.
+std::string generator_tag(const std::string& generator) {
+  if (!rng::is_plugin(generator)) return generator;
+  std::string stem = std::filesystem::path(generator.substr(rng::kPluginPrefix.size())).stem().string();
+  for (char& ch : stem)
+    if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '_' && ch != '.') ch = '_';
+  return "ext-" + stem.substr(0, 64);
+}
+
 std::string Cell::id() const {
-  char buf[200];
+  char buf[400];
+  const std::string tag = generator_tag(generator);
   const std::string n = noise();
   // Exact: two Δt that differ in any bit get two ids (the %g form where that is exact, so stores keep names).
   std::string dt_part = "dt" + exact_decimal(dt);
@@ -63,9 +74,9 @@ std::string Cell::id() const {
   }
   if (gamma > 0) dt_part += "-gamma" + exact_decimal(gamma);
   if (reference)
-    std::snprintf(buf, sizeof buf, "%s-%s-%s-rep%02d", generator.c_str(), n.c_str(), dt_part.c_str(), replica);
+    std::snprintf(buf, sizeof buf, "%s-%s-%s-rep%02d", tag.c_str(), n.c_str(), dt_part.c_str(), replica);
   else
-    std::snprintf(buf, sizeof buf, "%s-r%02d-%s-%s-%s-rep%02d", generator.c_str(), rounds, n.c_str(),
+    std::snprintf(buf, sizeof buf, "%s-r%02d-%s-%s-%s-rep%02d", tag.c_str(), rounds, n.c_str(),
                   seeding_name().c_str(), dt_part.c_str(), replica);
   return buf;
 }

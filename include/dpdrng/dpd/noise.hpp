@@ -91,6 +91,24 @@ struct HashNoise {
   void zetas(const Block* a, const Block* b, double* z, std::size_t m) const {
     feed_zetas(distribution, feed_, a, b, z, m);
   }
+
+  // A generator with batch members (a plug-in behind a function pointer) takes a whole batch of pairs per call.
+  static constexpr bool kBatch = requires(const G& g, const double* d, const std::uint32_t* u, Block* out) {
+    g.distance_batch(d, d, d, std::size_t{}, out);
+    g.pair_step_batch(u, u, std::uint64_t{}, std::uint64_t{}, std::size_t{}, out);
+  };
+  // The blocks of n canonical pairs, or their second blocks (second_input's map: (dy, dz, dx), ~step).
+  void raw_batch(const std::uint32_t* i, const std::uint32_t* j, const double* dx, const double* dy,
+                 const double* dz, std::uint64_t step, std::size_t n, Block* out, bool second) const {
+    if constexpr (S == rng::Seeding::distance) {
+      if (second)
+        gen.distance_batch(dy, dz, dx, n, out);
+      else
+        gen.distance_batch(dx, dy, dz, n, out);
+    } else {
+      gen.pair_step_batch(i, j, second ? ~step : step, seed, n, out);
+    }
+  }
 };
 
 // The reference: two successive std::mt19937 draws per pair slot (high word first, as rng::Mt19937::next64);

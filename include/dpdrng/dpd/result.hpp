@@ -177,6 +177,11 @@ void put_run_labels(nlohmann::json& j, const Result& r) {
   j["status"] = r.status.text();
   j["steps_done"] = r.steps_done;
   j["generator"] = r.generator;
+  // A plug-in's identity beside its path: the name it gives itself and its library's digest.
+  if (rng::is_plugin(r.generator)) {
+    const rng::LoadedPlugin& p = rng::load_plugin(r.generator);
+    j["plugin"] = {{"name", p.name}, {"file", p.file}, {"sha256", p.sha256}};
+  }
   j["seeding"] = r.seeding;
   j["distribution"] = r.distribution;
   j["feed"] = r.feed;

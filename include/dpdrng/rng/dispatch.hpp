@@ -26,6 +26,7 @@ decltype(auto) with_hash(const GeneratorSpec& s, F&& f) {
     case Family::splitmix64: return with_family_hash<Family::splitmix64>(s, std::forward<F>(f));
     case Family::saru: return with_family_hash<Family::saru>(s, std::forward<F>(f));
     case Family::defect: return with_family_hash<Family::defect>(s, std::forward<F>(f));
+    case Family::plugin: return with_family_hash<Family::plugin>(s, std::forward<F>(f));
     case Family::mt19937: break;
   }
   throw_not_keyed_hash(s.name);
@@ -37,6 +38,7 @@ template <class F>
 decltype(auto) with_pair_noise(const GeneratorSpec& s, Seeding seeding, Distribution dist, std::uint64_t seed,
                                F&& f, Feed feed = Feed::halves) {
   check_feed(dist, feed);
+  check_seeding(s, seeding);
   return with_hash(s, [&](const auto& gen) -> decltype(auto) {
     using G = std::decay_t<decltype(gen)>;
     auto with_dist = [&]<Seeding S>() -> decltype(auto) {

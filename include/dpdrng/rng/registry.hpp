@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "dpdrng/rng/key.hpp"
+#include "dpdrng/rng/plugin.hpp"
 #include "dpdrng/rng/seeding.hpp"
 
 namespace dpdrng::rng {
@@ -26,8 +27,9 @@ struct SplitMix64;
 struct Saru;
 struct Defect;
 
-// The generator families. mt19937 is the reference stream, not a keyed hash.
-enum class Family { tea32, tea64, philox4x32, threefry2x64, splitmix64, saru, defect, mt19937 };
+// The generator families. mt19937 is the reference stream, not a keyed hash; plugin is a user's keyed hash loaded
+// at run time (`ext:PATH`, plugin.hpp).
+enum class Family { tea32, tea64, philox4x32, threefry2x64, splitmix64, saru, defect, plugin, mt19937 };
 
 template <int... R>
 using Rounds = std::integer_sequence<int, R...>;
@@ -77,8 +79,10 @@ struct GeneratorInfo {
   bool keyed_hash;               // false: a sequential stream (mt19937), not usable as pair-keyed noise
 };
 
+// The built-in generators; a plug-in (`ext:PATH`) is not listed.
 std::span<const GeneratorInfo> generator_table();
-// throws InputError naming the known generators; "defect:..." (defect.hpp) is checked and gives the "defect" entry
+// throws InputError naming the known generators; "defect:..." (defect.hpp) is checked and gives the "defect"
+// entry; "ext:PATH" loads the plug-in (load_plugin) and gives the plug-ins' entry
 const GeneratorInfo& find_generator(std::string_view name);
 inline Family family_of(std::string_view name) { return find_generator(name).family; }
 
@@ -96,6 +100,9 @@ std::string describe(const GeneratorSpec& spec);  // e.g. "tea32(1)"
 [[noreturn]] void throw_counter_not_pair_seeding();
 // A lag-1 defect needs the step in the hash input: InputError for a lag-1 defect under distance seeding.
 void check_defect_seeding(const GeneratorSpec& spec, Seeding seeding);
+// What a generator cannot do under a seeding, as InputError: a lag-1 defect without the step, a plug-in without
+// the seeding's entry. Every path that runs a generator under a seeding calls it before the hot loop.
+void check_seeding(const GeneratorSpec& spec, Seeding seeding);
 
 namespace detail {
 template <template <int> class G, int R0, int... Rs, class F>
@@ -154,6 +161,8 @@ decltype(auto) family_hash(const GeneratorSpec& s, Rounds<Rs...> compiled, F&& f
     return keyed<SplitMix64>(s, std::forward<F>(f));
   else if constexpr (Fam == Family::saru)
     return keyed<Saru>(s, std::forward<F>(f));
+  else if constexpr (Fam == Family::plugin)
+    return with_plugin_hash(s.name, std::forward<F>(f));
   else {
     static_assert(Fam == Family::defect, "mt19937 is not a keyed hash");
     return keyed<Defect>(s, std::forward<F>(f));

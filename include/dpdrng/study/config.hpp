@@ -21,6 +21,7 @@ struct GeneratorEntry {
   std::string name;
   std::vector<int> rounds;             // empty in TOML → the generator's default round count
   std::vector<rng::Seeding> seedings;  // empty → the study's seedings
+  std::string sha256;                  // a plug-in's: the digest of its library (pinned by the config or allowed)
 };
 
 // name = "water" (the paper's fluid) or "bilayer" (the H3(T6)2 membrane of dpd/bilayer.hpp: box, lipids and a_ij
@@ -113,6 +114,10 @@ struct StudyConfig {
   }
   int reference_replicas_at(double dt) const { return std::max(reference_replica_count(), replicas_at(dt)); }
 };
+
+// A config that names a plug-in (`ext:PATH`) loads native code: it is read only when its entry pins the library's
+// SHA-256 (`sha256 = "…"`) or the path is allowed for this process (`--allow-plugin PATH` of the study commands).
+void allow_plugin(const std::string& path);  // InputError if the path does not name a file
 
 // `origin` names the source in messages (a path, or "<string>").
 StudyConfig parse_config(const std::string& toml_text, const std::string& origin);

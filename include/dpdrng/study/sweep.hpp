@@ -37,6 +37,10 @@ std::string noise_name(rng::Distribution d, rng::Feed f);
 // The seeding's name, "stream" for the reference (the text stores and reports carry).
 std::string seeding_name(rng::Seeding s, bool reference);
 
+// The generator's part of a cell id, which is a file name: a plug-in (`ext:PATH`) becomes "ext-" and its library's
+// file stem, other characters than letters, digits, '_' and '.' replaced by '_'.
+std::string generator_tag(const std::string& generator);
+
 struct Cell {
   std::string generator;
   int rounds = 1;
