@@ -56,7 +56,7 @@ TEST(KatTea, BouncyCastleVectors32Cycles) {
 }
 
 // 64TEA is the same cycle on 64-bit words: with every word below 2^32 and no carries reaching bit 32 it would
-// agree with TEA, but it does not in general; so here: its round function against DESIGN.md's equations for
+// agree with TEA, but it does not in general; so here: its round function against docs/design.md's equations for
 // several cycles, and the paper's join (a, b) = (x0', x1').
 TEST(KatTea, Tea64FollowsTheRoundEquationsForManyCycles) {
   const std::array<std::uint64_t, 4> k{3, 4, 5, 6};

@@ -42,7 +42,7 @@ TEST(Tea, Tea32SplitsLowWordIntoX0AndJoinsX1High) {
   EXPECT_EQ(Tea32<1>{}.distance(-0.731, 5.0, 7.0)[0], (std::uint64_t{x1} << 32) | x0);
 }
 
-// One TEA cycle written out by hand from DESIGN.md's round equations, on 64-bit words.
+// One TEA cycle written out by hand from docs/design.md's round equations, on 64-bit words.
 TEST(Tea, Tea64OneCycleByHand) {
   const std::uint64_t dx = std::bit_cast<std::uint64_t>(0.25), dy = std::bit_cast<std::uint64_t>(-1.5);
   std::uint64_t x0 = dx, x1 = dy, sum = 0x9E3779B9ull;

@@ -83,7 +83,7 @@ TEST(NoiseCorrelation, MatrixLayoutsAgree) {
   EXPECT_THROW(cross_pair_correlation(a, std::vector<std::pair<std::size_t, std::size_t>>{{0, 3}}), InputError);
 }
 
-// The pitfall of DESIGN.md in its purest form: a counter mapped to [0,1) gives every step a perfect histogram,
+// A pitfall of docs/design.md in its purest form: a counter mapped to [0,1) gives every step a perfect histogram,
 // and neighbouring pairs and steps are almost equal.
 TEST(NoiseCorrelation, PlainCounterPassesChi2ButNotTheCorrelations) {
   std::vector<double> z(kPairs * kSteps);
