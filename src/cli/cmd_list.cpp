@@ -46,6 +46,8 @@ void run_list(bool json) {
                   "%13s eta = Philox4x32-10's zeta; corr(zeta(t), zeta(t-1)) = lag1; lag1 needs seeding pair-step\n",
                   "", rng::defect_syntax().c_str(), "", "");
   }
+  std::printf("%-13s your own keyed hash in a shared library (C header dpdrng/plugin.h; docs/plugins.md)\n",
+              "ext:PATH");
 }
 
 const bool registered = register_command(5, [](CLI::App& root) {
