@@ -59,6 +59,7 @@ class NoiseKernelOf final : public NoiseKernel {
       ++k;
     }
     noise_.zetas(blk, sc.blk2.data(), b.zeta, k);
+    if (b.used) copy_used(blk, sc.blk2.data(), k, b.used);
     return k;
   }
 
@@ -79,6 +80,7 @@ class NoiseKernelOf final : public NoiseKernel {
     if (b.tap[0])
       for (int w = 0; w < Noise::kWords; ++w)
         for (std::size_t t = 0; t < k; ++t) b.tap[w][t] = blk[t][w];
+    if (b.used) copy_used(blk, sc.blk2.data(), k, b.used);
   }
 
   void pair(const rng::PairInput& p, std::size_t slot, std::uint64_t* words, double& zeta) const override {
@@ -96,6 +98,16 @@ class NoiseKernelOf final : public NoiseKernel {
   struct Scratch {
     std::vector<Block> blk, blk2;  // the pairs' blocks; their second blocks (blocks feed)
   };
+
+  // The k pairs' blocks (and second blocks under the blocks feed), pair after pair, into out.
+  void copy_used(const Block* blk, const Block* blk2, std::size_t k, std::uint64_t* out) const {
+    const bool two = noise_.feed() == rng::Feed::blocks;
+    for (std::size_t t = 0; t < k; ++t) {
+      for (int w = 0; w < Noise::kWords; ++w) *out++ = blk[t][w];
+      if (two)
+        for (int w = 0; w < Noise::kWords; ++w) *out++ = blk2[t][w];
+    }
+  }
 
   Scratch& scratch(int thread, std::size_t m) {
     Scratch& sc = scratch_[std::size_t(thread)];
