@@ -271,6 +271,33 @@ TEST(BadInput, SimulateSeriesDirCheckedFirst) {
   fs::remove_all(scratch(".series"));
 }
 
+TEST(BadInput, SimulateTapOptions) {
+  const std::string f = scratch(".tap");
+  const std::string tiny = "simulate -n 64 --steps 20 --equilibrate 10 -q ";
+  expect_all_bad(tiny, {{"--tap-steps 11:20", "--tap-steps: needs --tap-words or --tap-zeta"},
+                        {"--tap-zeta " + f + " --tap-steps 15", "--tap-steps: '15' is not A:B"},
+                        {"--tap-zeta " + f + " --tap-steps 15:12", "--tap-steps '15:12'"},
+                        {"--tap-zeta " + f + " --tap-steps 10:20", "outside the production steps 11:20"},
+                        {"--tap-zeta " + f + " --tap-steps 11:21", "outside the production steps 11:20"},
+                        {"--tap-zeta " + f + " --tap-steps -1:5", "--tap-steps"},
+                        {"--tap-zeta ''", "--tap-zeta: an empty path"},
+                        {"--tap-words " + f + " --tap-zeta " + f, "' is also --tap-words"},
+                        {"--tap-words " + f + ".json --tap-zeta " + f, "is also --tap-words"},
+                        {"--integrator shardlow --tap-zeta " + f, "--tap-zeta: --integrator shardlow"},
+                        {"--integrator pnhln --tap-words " + f, "--tap-words: --integrator pnhln"},
+                        {"--scene bilayer --tap-words " + f, "--tap-words: the water scene only"}});
+  // 10^9 steps would run for days: the paths must be refused before the first one.
+  const std::string dir = scratch(".tapdir");
+  fs::create_directories(dir);
+  expect_bad("simulate --steps 1000000000 -q --tap-zeta " + dir, "': is a directory");
+  expect_bad("simulate --steps 1000000000 -q --tap-words " + dir + "/no/w", "': no directory");
+  fs::create_directories(dir + "/w.json");
+  expect_bad("simulate --steps 1000000000 -q --tap-words " + dir + "/w", "--tap-words's sidecar");
+  EXPECT_FALSE(fs::exists(f));
+  EXPECT_FALSE(fs::exists(f + ".json"));
+  fs::remove_all(dir);
+}
+
 TEST(BadInput, UnstableSimulateHasNoObservables) {
   const Result j = run("simulate -n 64 --steps 20 --equilibrate 10 -q --dt 5 --json");
   ASSERT_EQ(j.code, 0) << j.err;
