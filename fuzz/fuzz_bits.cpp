@@ -1,5 +1,6 @@
 // The NIST bit readers (ASCII '0'/'1' text, raw bytes MSB first; the first byte picks the format and a bit
-// limit), and the stream split: the bits read are exactly the input's, and binary bytes in ASCII mode are refused.
+// limit), and the stream split: the bits read are exactly the input's, and in ASCII mode any byte but '0', '1'
+// and white space is refused.
 #include <cstdint>
 #include <sstream>
 #include <string>
@@ -33,6 +34,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } else {
     for (const char c : body)
       if (c == '0' || c == '1') bits += c;
+    // Read to its end (below the limit), the input held bits and white space alone.
+    if (bits.size() < limit)
+      for (const char c : body)
+        require(c == '0' || c == '1' || c == ' ' || c == '\n' || c == '\r' || c == '\t' || c == '\v' || c == '\f',
+                "ASCII input with a byte that is neither a bit nor white space accepted");
   }
   if (bits.size() > limit) bits.resize(limit);
   require(s.size() == bits.size(), "bit count differs from the input's");

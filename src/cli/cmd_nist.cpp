@@ -18,7 +18,7 @@ namespace nist = stats::nist;
 void NistInput::add_to(CLI::App& app) {
   app.add_option("--input,-i", input, "bit file, or - for standard input");
   app.add_option("--format", format,
-                 "ascii ('0'/'1', other text skipped; binary bytes refused) or raw (bytes, MSB first)")
+                 "ascii ('0'/'1' and white space; any other byte refused) or raw (bytes, MSB first)")
       ->check(CLI::IsMember({"ascii", "raw"}))
       ->capture_default_str();
   const IntRange positive{1, std::numeric_limits<std::size_t>::max()};

@@ -19,6 +19,7 @@
 #include "bilayer_cli.hpp"
 #include "csv_out.hpp"
 #include "simulate_physics.hpp"
+#include "simulate_taps.hpp"
 
 namespace dpdrng::cli {
 namespace cmd_simulate {
@@ -30,6 +31,7 @@ struct SimulateArgs {
   dpd::WaterConfig cfg;
   RunOptions run{"all"};
   std::string compare;  // a reference generator to run at the same settings
+  TapOptions taps;
 };
 
 void write_series(const std::filesystem::path& dir, const dpd::RunResult& r) {
@@ -149,6 +151,7 @@ dpd::WaterConfig reference_config(dpd::WaterConfig cfg, const std::string& name)
   try {
     cfg.generator = rng::validated(rng::GeneratorSpec{name, 0, cfg.generator.key});
     cfg.series = false;
+    cfg.taps = {};
     cfg.validate();
   } catch (const InputError& e) {
     throw InputError(std::string("--compare: ") + e.what());
@@ -164,11 +167,14 @@ void run_simulate(SimulateArgs& a, const CLI::App& sub) {
   if (cfg.integrator == dpd::Integrator::pnhln) check_reference_only(sub, a);
   cfg.series = !a.run.series_dir.empty();
   cfg.validate();
+  a.taps.apply(cfg);  // against the validated steps
   std::optional<dpd::WaterConfig> reference;
   if (!a.compare.empty()) reference = reference_config(cfg, a.compare);
   begin_work();
   if (cfg.series)
     prepare_output_files(a.run.series_dir, {"series.csv", "velocity_pdf.csv", "msd.csv", "rdf.csv"}, "--series");
+  std::optional<TapWriter> taps;
+  if (a.taps.any()) a.taps.check_paths(), taps.emplace(a.taps, cfg);
   dpd::RunHooks hooks;
   const bool long_run = double(cfg.particles) * double(cfg.steps) > 2e7;
   if (!a.run.quiet && long_run)
@@ -176,8 +182,11 @@ void run_simulate(SimulateArgs& a, const CLI::App& sub) {
       std::cerr << "\rstep " << step << " / " << steps << std::flush;
       if (step == steps) std::cerr << "\n";
     };
-  const dpd::RunResult r = dpd::run_water(cfg, hooks);
+  dpd::RunHooks tapped = hooks;
+  if (taps) tapped.in_range = [&taps](const dpd::InRangeTap& tap) { taps->step(tap); };
+  const dpd::RunResult r = dpd::run_water(cfg, tapped);
   if (!a.run.series_dir.empty()) write_series(a.run.series_dir, r);
+  if (taps) taps->commit(r);
   if (reference) {
     const dpd::RunResult ref = dpd::run_water(*reference, hooks);
     if (a.run.json) {
@@ -209,6 +218,15 @@ const bool registered = register_command(40, [](CLI::App& root) {
       "10000 steps (500 equilibration), every pair every step. mt19937 (the reference) draws each step's\n"
       "numbers from one stream in a fixed pair order. --series DIR writes series.csv, velocity_pdf.csv,\n"
       "msd.csv and rdf.csv. A run that blows up still exits 0: its status reads 'unstable at step k: reason'.\n"
+      "Taps (water; mvv and scmvv): --tap-zeta FILE writes the zeta the force used, --tap-words FILE the\n"
+      "generator words each came from (the block's words, then under --feed blocks the second block's), for the\n"
+      "production steps A:B of --tap-steps (default: all of them, the steps of the zeta block of --json; a step\n"
+      "that blows up is left out, as there). Step-major; within a step only the pairs inside r_c (r < rc, those\n"
+      "whose zeta enters the force), in the order (i, j), i < j, ascending by bead index, whatever --pairs and\n"
+      "--threads (the files are the same bit for bit for any --threads). Raw little-endian: words uint64 (for\n"
+      "chi2/ttest/corr --format u64, nist --format raw, dieharder -g 200, PractRand stdin64), zeta float64 (for\n"
+      "moments/gof --format f64). FILE.json describes each: generator, key, seeding, distribution, feed, words\n"
+      "per pair, steps, pairs per step, count, dtype. Files appear whole, after the run, or not at all.\n"
       "Integrators (water only):\n"
       "  mvv         Groot-Warren modified velocity-Verlet with --lambda (the default).\n"
       "  shardlow    Shardlow's S1 splitting: k_BT much nearer 1 at large dt; the reported pressure is the\n"
@@ -244,12 +262,14 @@ const bool registered = register_command(40, [](CLI::App& root) {
               "lags K of the zeta autocorrelation on tracked pairs inside r_c (0: off)", {0, 1000});
   sub->add_option("--compare", a->compare,
                   "also run this reference generator (e.g. mt19937) at the same settings and print the shifts");
+  a->taps.add_to(*sub);
   sub->callback([a, sub] {
     // An option that would change nothing is refused rather than silently ignored.
     if (a->integrator == "shardlow" && sub->count("--lambda") > 0)
       throw InputError("--lambda: the shardlow integrator has no lambda (it belongs to Groot-Warren's MVV)");
     if (a->scene == "bilayer") {
       if (!a->compare.empty()) throw InputError("--compare: the water scene only");
+      if (!a->taps.given().empty()) throw InputError(a->taps.given() + ": the water scene only");
       return simulate_bilayer(*sub, a->cfg, a->run);
     }
     run_simulate(*a, *sub);

@@ -8,6 +8,8 @@
 #include <cstring>
 #include <iostream>
 #include <memory>
+#include <stdexcept>
+#include <utility>
 
 #include "dpdrng/common/error.hpp"
 
@@ -17,19 +19,21 @@ namespace fs = std::filesystem;
 namespace {
 
 // Every byte through write(2), each call checked; an interrupted or short write goes on from where it stopped.
-// Returns 0 or the errno of the first failure (the descriptor is closed either way).
-int write_all(int fd, const std::string& bytes, bool sync) {
+// Returns 0 or the errno of the first failure.
+int write_bytes(int fd, const char* data, std::size_t size) {
   std::size_t done = 0;
-  int err = 0;
-  while (done < bytes.size()) {
-    const ssize_t w = ::write(fd, bytes.data() + done, bytes.size() - done);
+  while (done < size) {
+    const ssize_t w = ::write(fd, data + done, size - done);
     if (w < 0 && errno == EINTR) continue;
-    if (w <= 0) {
-      err = w < 0 ? errno : EIO;
-      break;
-    }
+    if (w <= 0) return w < 0 ? errno : EIO;
     done += static_cast<std::size_t>(w);
   }
+  return 0;
+}
+
+// write_bytes(), then the sync if asked; the descriptor is closed either way.
+int write_all(int fd, const std::string& bytes, bool sync) {
+  int err = write_bytes(fd, bytes.data(), bytes.size());
   if (err == 0 && sync && ::fsync(fd) != 0) err = errno;
   if (::close(fd) != 0 && err == 0) err = errno;
   return err;
@@ -53,16 +57,49 @@ fs::path temporary_name(const fs::path& path) {
 }
 
 void write_file_atomically(const fs::path& path, const std::string& bytes) {
-  const fs::path tmp = temporary_name(path);
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
-  if (fd < 0) throw OutputError(path.string() + ": cannot create " + tmp.filename().string() + ": " +
-                                std::strerror(errno));
-  int err = write_all(fd, bytes, true);
-  if (err == 0 && ::rename(tmp.c_str(), path.c_str()) != 0) err = errno;
-  if (err != 0) {
-    ::unlink(tmp.c_str());  // a half-written temporary is no use to anyone
-    throw OutputError(path.string() + ": " + std::strerror(err));
-  }
+  AtomicFile file(path);
+  file.write(bytes.data(), bytes.size());
+  file.commit();
+}
+
+AtomicFile::AtomicFile(fs::path path) : path_(std::move(path)), tmp_(temporary_name(path_)) {
+  fd_ = ::open(tmp_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd_ < 0) throw OutputError(path_.string() + ": cannot create " + tmp_.filename().string() + ": " +
+                                 std::strerror(errno));
+}
+
+AtomicFile::~AtomicFile() {
+  if (settled_) return;
+  if (fd_ >= 0) ::close(fd_);
+  ::unlink(tmp_.c_str());  // a half-written temporary is no use to anyone
+}
+
+void AtomicFile::fail(int err) {
+  if (fd_ >= 0) ::close(fd_);
+  fd_ = -1;
+  ::unlink(tmp_.c_str());
+  settled_ = true;  // nothing left to remove
+  throw OutputError(path_.string() + ": " + std::strerror(err));
+}
+
+void AtomicFile::write(const void* data, std::size_t bytes) {
+  if (settled_ || fd_ < 0) throw std::logic_error("AtomicFile::write after finish() or commit()");
+  if (const int err = write_bytes(fd_, static_cast<const char*>(data), bytes)) fail(err);
+}
+
+void AtomicFile::finish() {
+  if (fd_ < 0) return;
+  int err = ::fsync(fd_) != 0 ? errno : 0;
+  if (::close(fd_) != 0 && err == 0) err = errno;
+  fd_ = -1;
+  if (err != 0) fail(err);
+}
+
+void AtomicFile::commit() {
+  if (settled_) throw std::logic_error("AtomicFile::commit twice or after a failure");
+  finish();
+  if (::rename(tmp_.c_str(), path_.c_str()) != 0) fail(errno);
+  settled_ = true;
 }
 
 void flush_standard_output() {

@@ -157,7 +157,11 @@ void WaterConfig::validate() const {
     if (!(i < j) || j >= static_cast<std::uint32_t>(particles))
       bad("taps.pairs", "(" + std::to_string(i) + ", " + std::to_string(j) + ") needs i < j < particles");
   const bool sweeps = integrator == Integrator::shardlow || integrator == Integrator::pnhln;
-  if (sweeps && (!taps.raw_steps.empty() || !taps.pairs.empty()))
+  if (taps.in_range() && (taps.in_range_first <= equilibrate || taps.in_range_last > steps))
+    bad("taps.in_range", std::to_string(taps.in_range_first) + ".." + std::to_string(taps.in_range_last) +
+                             " outside the production steps " + std::to_string(equilibrate + 1) + ".." +
+                             std::to_string(steps));
+  if (sweeps && (!taps.raw_steps.empty() || !taps.pairs.empty() || taps.in_range()))
     bad("integrator", std::string(to_string(integrator)) + " draws no numbers in the pair loop; taps need mvv or scmvv");
   if (integrator != Integrator::mvv && noise_override != NoiseOverride::off)
     bad("integrator", std::string(to_string(integrator)) + " has no noise override (a benchmark of the mvv pair loop)");

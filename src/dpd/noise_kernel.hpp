@@ -62,6 +62,7 @@ class NoiseKernelOf final : public NoiseKernel {
       ++k;
     }
     noise_.zetas(blk, sc.blk2.data(), b.zeta, k);
+    if (b.used) copy_used(blk, sc.blk2.data(), k, b.used);
     return k;
   }
 
@@ -83,6 +84,7 @@ class NoiseKernelOf final : public NoiseKernel {
     if (b.tap[0])
       for (int w = 0; w < Noise::kWords; ++w)
         for (std::size_t t = 0; t < k; ++t) b.tap[w][t] = blk[t][w];
+    if (b.used) copy_used(blk, sc.blk2.data(), k, b.used);
   }
 
   void pair(const rng::PairInput& p, std::size_t slot, std::uint64_t* words, double& zeta) const override {
@@ -116,6 +118,7 @@ class NoiseKernelOf final : public NoiseKernel {
     }
     sc.i.assign(k, b.i);
     batch_zetas(sc, sc.i.data(), b.j, b.dx, b.dy, b.dz, b.step, k, b.zeta);
+    if (b.used) copy_used(sc.blk.data(), sc.blk2.data(), k, b.used);
     return k;
   }
 
@@ -130,6 +133,7 @@ class NoiseKernelOf final : public NoiseKernel {
     if (b.tap[0])
       for (int w = 0; w < Noise::kWords; ++w)
         for (std::size_t t = 0; t < k; ++t) b.tap[w][t] = sc.blk[t][w];
+    if (b.used) copy_used(sc.blk.data(), sc.blk2.data(), k, b.used);
   }
 
   void batch_zetas(Scratch& sc, const std::uint32_t* i, const std::uint32_t* j, const double* dx, const double* dy,
@@ -137,6 +141,16 @@ class NoiseKernelOf final : public NoiseKernel {
     noise_.raw_batch(i, j, dx, dy, dz, step, k, sc.blk.data(), false);
     if (noise_.feed() == rng::Feed::blocks) noise_.raw_batch(i, j, dx, dy, dz, step, k, sc.blk2.data(), true);
     noise_.zetas(sc.blk.data(), sc.blk2.data(), zeta, k);
+  }
+
+  // The k pairs' blocks (and second blocks under the blocks feed), pair after pair, into out.
+  void copy_used(const Block* blk, const Block* blk2, std::size_t k, std::uint64_t* out) const {
+    const bool two = noise_.feed() == rng::Feed::blocks;
+    for (std::size_t t = 0; t < k; ++t) {
+      for (int w = 0; w < Noise::kWords; ++w) *out++ = blk[t][w];
+      if (two)
+        for (int w = 0; w < Noise::kWords; ++w) *out++ = blk2[t][w];
+    }
   }
 
   Scratch& scratch(int thread, std::size_t m) {

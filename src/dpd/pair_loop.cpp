@@ -16,6 +16,37 @@ namespace dpdrng::dpd {
 
 namespace {
 
+// Appends the k pairs (first(t), second(t)) to out, each under its canonical key (i < j), with its used words
+// (`words` a pair, from used) and ζ.
+template <class First, class Second>
+void append_in_range(InRangeTap& out, First first, Second second, std::size_t k, const std::uint64_t* used,
+                     int words, const double* zeta) {
+  for (std::size_t t = 0; t < k; ++t) {
+    const std::uint64_t a = first(t), b = second(t);
+    out.keys.push_back(a < b ? a << 32 | b : b << 32 | a);
+  }
+  out.words.insert(out.words.end(), used, used + k * std::size_t(words));
+  out.zeta.insert(out.zeta.end(), zeta, zeta + k);
+}
+
+// Puts the pairs of `tap` into ascending key order, their words and ζ with them.
+void sort_by_key(InRangeTap& tap) {
+  if (std::is_sorted(tap.keys.begin(), tap.keys.end())) return;
+  const std::size_t n = tap.size(), w = std::size_t(tap.words_per_pair);
+  std::vector<std::size_t> order(n);
+  for (std::size_t t = 0; t < n; ++t) order[t] = t;
+  std::sort(order.begin(), order.end(), [&tap](std::size_t a, std::size_t b) { return tap.keys[a] < tap.keys[b]; });
+  InRangeTap sorted;
+  sorted.keys.reserve(n), sorted.words.reserve(n * w), sorted.zeta.reserve(n);
+  for (const std::size_t t : order) {
+    sorted.keys.push_back(tap.keys[t]);
+    sorted.words.insert(sorted.words.end(), tap.words.begin() + std::ptrdiff_t(t * w),
+                        tap.words.begin() + std::ptrdiff_t((t + 1) * w));
+    sorted.zeta.push_back(tap.zeta[t]);
+  }
+  tap.keys.swap(sorted.keys), tap.words.swap(sorted.words), tap.zeta.swap(sorted.zeta);
+}
+
 class PairLoop final : public PairForces {
  public:
   PairLoop(std::unique_ptr<NoiseKernel> noise, const DpdKernel& kernel, PairMode mode, int threads, std::size_t n,
@@ -43,7 +74,7 @@ class PairLoop final : public PairForces {
       tap->step = static_cast<std::int64_t>(step);
       tap->words_per_pair = words_;
     }
-    const Ctx c{s, v, step, tap, tap_zeta && !zero_, configurational_};
+    const Ctx c{s, v, step, tap, tap_zeta && !zero_, configurational_, tap_in_range_ && !zero_};
     // Generator calls per pair: the blocks feed hashes a second block.
     const std::uint64_t calls = zero_ ? 0 : noise_->feed() == rng::Feed::blocks ? 2 : 1;
     ForceSums sums;
@@ -63,6 +94,7 @@ class PairLoop final : public PairForces {
       sums.numbers = calls * sums.in_range;
     }
     if (tap_series && !zero_) record_series(s, step, taps);
+    if (c.in_tap) gather_in_range(taps.in_range, step);
     return sums;
   }
 
@@ -90,6 +122,7 @@ class PairLoop final : public PairForces {
     double min_r2 = 0;
     double laplacian = 0;  // Σ over the row's pairs of ∇²u
     ZetaSums zeta;
+    InRangeTap in_range;   // on steps that tap the pairs inside r_c
   };
   struct Scratch {
     // A row's pairs (all mode) or a layer's (cells mode): partners (sorted indices in cells mode); cells:
@@ -100,6 +133,7 @@ class PairLoop final : public PairForces {
     std::vector<double> cx, cy, cz;   // cells: coordinates of a cell's candidates, contiguous
     std::vector<std::uint32_t> cand;  // cells: their sorted indices
     std::vector<std::uint64_t> tap[2];  // cells: a layer's tapped words
+    std::vector<std::uint64_t> used;    // the batch's used words, on steps that tap the pairs inside r_c
     void resize(std::size_t n) { grow_pairs(n), grow_candidates(n); }
     // Room for n pairs, keeping those already collected.
     void grow_pairs(std::size_t n) {
@@ -125,7 +159,8 @@ class PairLoop final : public PairForces {
     std::uint64_t step;
     RawTap* tap;
     bool tap_zeta;
-    bool conf;  // sum the configurational temperature's parts this step
+    bool conf;    // sum the configurational temperature's parts this step
+    bool in_tap;  // record the pairs inside r_c (Taps::in_range)
   };
 
   // Rows in groups of kGroup, a group's hashed noise drawn in one batch (row_group).
@@ -169,11 +204,12 @@ class PairLoop final : public PairForces {
       off += k;
     }
     const PairBatch b{sc.pi.data(), sc.j.data(), off, sc.dx.data(), sc.dy.data(), sc.dz.data(), c.step, 0,
-                      {nullptr, nullptr}, sc.zeta.data()};
+                      {nullptr, nullptr}, sc.zeta.data(), c.in_tap ? used_room(sc, off) : nullptr};
     noise_->pairs(b, thread);
     off = 0;
     for (std::uint32_t i = i0; i < i1; ++i) {
       const std::size_t k = sc.counts[i - i0];
+      if (c.in_tap) record_row(i, k, sc, off);
       forces<false>(c, i, k, sc, off, rows_[i]);
       off += k;
     }
@@ -251,13 +287,50 @@ class PairLoop final : public PairForces {
     double* r2s = sc.r2.data();
     const double rc2 = k_.rc2();
     if constexpr (!Zero) {
-      RowBatch b{i, m, dxs, dys, dzs, r2s, sc.j.data(), rc2, c.step, base, {nullptr, nullptr}, sc.zeta.data()};
+      RowBatch b{i, m, dxs, dys, dzs, r2s, sc.j.data(), rc2, c.step, base, {nullptr, nullptr}, sc.zeta.data(),
+                 c.in_tap ? used_room(sc, m) : nullptr};
       if (c.tap)
         for (int w = 0; w < words_; ++w) b.tap[w] = c.tap->words[w].data() + base;
-      forces<Zero>(c, i, noise_->row(b, thread), sc, 0, rows_[i]);
+      const std::size_t k = noise_->row(b, thread);
+      if (c.in_tap) record_row(i, k, sc, 0);
+      forces<Zero>(c, i, k, sc, 0, rows_[i]);
       return;
     }
     forces<Zero>(c, i, compact_in_range(i + 1, m, rc2, dxs, dys, dzs, r2s, sc.j.data()), sc, 0, rows_[i]);
+  }
+
+  // Room for the used words of k pairs in sc.
+  std::uint64_t* used_room(Scratch& sc, std::size_t k) const {
+    const std::size_t need = k * std::size_t(noise_->used_words());
+    if (sc.used.size() < need) sc.used.resize(std::max(need, 2 * sc.used.size()));
+    return sc.used.data();
+  }
+
+  // All mode: row i's k pairs inside r_c, held in sc from pair `off` on, as its part of the step's tap.
+  void record_row(std::uint32_t i, std::size_t k, const Scratch& sc, std::size_t off) {
+    InRangeTap& out = rows_[i].in_range;
+    out.clear();
+    const std::uint32_t* js = sc.j.data() + off;
+    const int w = noise_->used_words();
+    append_in_range(out, [i](std::size_t) { return i; }, [js](std::size_t t) { return js[t]; }, k,
+                    sc.used.data() + off * std::size_t(w), w, sc.zeta.data() + off);
+  }
+
+  // The step's tap from the rows' or the cells' parts, in key order.
+  void gather_in_range(InRangeTap& out, std::uint64_t step) {
+    out.clear();
+    out.step = static_cast<std::int64_t>(step);
+    out.words_per_pair = noise_->used_words();
+    auto add = [&out](const InRangeTap& part) {
+      out.keys.insert(out.keys.end(), part.keys.begin(), part.keys.end());
+      out.words.insert(out.words.end(), part.words.begin(), part.words.end());
+      out.zeta.insert(out.zeta.end(), part.zeta.begin(), part.zeta.end());
+    };
+    if (mode_ == PairMode::all)
+      for (const Row& row : rows_) add(row.in_range);
+    else
+      for (const InRangeTap& part : cell_in_range_) add(part);
+    sort_by_key(out);
   }
 
   void resize_sorted(std::size_t n) {
@@ -353,19 +426,36 @@ class PairLoop final : public PairForces {
     // The layer's cells are consecutive, so are their pairs' slots.
     const std::uint64_t slot = slot_base_.empty() ? 0 : slot_base_[c0];
     PairBatch b{sc.pi.data(), sc.ids.data(), k, sc.dx.data(), sc.dy.data(), sc.dz.data(), cx.step, slot,
-                {nullptr, nullptr}, sc.zeta.data()};
+                {nullptr, nullptr}, sc.zeta.data(), cx.in_tap ? used_room(sc, k) : nullptr};
     if (tap)
       for (int w = 0; w < words_; ++w) {
         if (sc.tap[w].size() < k) sc.tap[w].resize(k);
         b.tap[w] = sc.tap[w].data();
       }
     noise_->pairs(b, thread);
+    if (cx.in_tap) record_cells(c0, c1, sc);
     if (!tap) return;
     std::size_t off = 0, bead = 0;
     for (int c = c0; c < c1; ++c) {
       std::size_t n = 0;
       for (std::uint32_t q = cells_.begin(c); q < cells_.end(c); ++q) n += sc.counts[bead++];
       for (int w = 0; w < words_; ++w) cell_tap_[c][w].assign(sc.tap[w].begin() + off, sc.tap[w].begin() + off + n);
+      off += n;
+    }
+  }
+
+  // Cells mode: the pairs of the cells [c0, c1), collected and drawn in sc, as those cells' parts of the tap.
+  void record_cells(int c0, int c1, const Scratch& sc) {
+    const int w = noise_->used_words();
+    std::size_t off = 0, bead = 0;
+    for (int c = c0; c < c1; ++c) {
+      std::size_t n = 0;
+      for (std::uint32_t q = cells_.begin(c); q < cells_.end(c); ++q) n += sc.counts[bead++];
+      InRangeTap& out = cell_in_range_[std::size_t(c)];
+      out.clear();
+      const std::uint32_t *pi = sc.pi.data() + off, *ids = sc.ids.data() + off;
+      append_in_range(out, [pi](std::size_t t) { return pi[t]; }, [ids](std::size_t t) { return ids[t]; }, n,
+                      sc.used.data() + off * std::size_t(w), w, sc.zeta.data() + off);
       off += n;
     }
   }
@@ -446,6 +536,7 @@ class PairLoop final : public PairForces {
     layer_force2_.assign(std::size_t(cells_.layers()), 0.0);
     const bool tap = cx.tap != nullptr;
     if (tap) cell_tap_.resize(std::size_t(nc));
+    if (cx.in_tap) cell_in_range_.resize(std::size_t(nc));
     const bool stream = noise_->stream();
     slot_base_.assign(stream ? std::size_t(nc) + 1 : 0, 0);
     // One region for the step's pair forces: three barriers (inside the sort, after it, after the gather;
@@ -643,6 +734,7 @@ class PairLoop final : public PairForces {
   int workers_ = 1;
   std::vector<int> done_, pending_, items_, queue_, cursor_;
   std::vector<std::array<std::vector<std::uint64_t>, 2>> cell_tap_;
+  std::vector<InRangeTap> cell_in_range_;  // cells mode: each cell's part of the step's tap
 };
 
 }  // namespace

@@ -18,8 +18,8 @@ namespace {
 // MSD on their own schedules, the series every step.
 class WaterObserver : public SceneObserver {
  public:
-  WaterObserver(const WaterConfig& cfg, RunResult& r, double L)
-      : cfg_(cfg), r_(r),
+  WaterObserver(const WaterConfig& cfg, RunResult& r, double L, const RunHooks& hooks)
+      : cfg_(cfg), r_(r), hooks_(hooks),
         tap_zeta_(cfg.observables && cfg.noise_override == NoiseOverride::off && cfg.integrator != Integrator::pnhln),
         production_(cfg.steps - cfg.equilibrate),
         rdf_every_(cfg.rdf_every > 0 ? cfg.rdf_every : (n() <= 2000 ? cfg.sample_every : 20 * cfg.sample_every)),
@@ -45,6 +45,7 @@ class WaterObserver : public SceneObserver {
   void sample(const StepSums& x, const System& s) override {
     if (!x.production) return;
     if (tap_zeta_) r_.zeta.merge(x.forces->zeta);  // mvv: the pair loop's ζ; shardlow: the sweep's
+    hand_over_in_range(x.step);
     T_.push_back(x.T), P_s_.push_back(P_), Pc_s_.push_back(Pc_);
     const double per_component = double(s.size()) - 1.0;  // 3N − 3 degrees of freedom, N − 1 per component
     for (int a = 0; a < 3; ++a) {
@@ -81,6 +82,15 @@ class WaterObserver : public SceneObserver {
   }
 
  private:
+  // The step's pairs inside r_c, recorded by its force evaluation, go out once the step has passed the guards,
+  // like its ζ into the zeta sums.
+  void hand_over_in_range(std::int64_t step) {
+    InRangeTap& tap = r_.taps.in_range;
+    if (tap.step != step) return;
+    if (hooks_.in_range) hooks_.in_range(tap);
+    tap.clear(), tap.step = -1;
+  }
+
   std::size_t n() const { return static_cast<std::size_t>(cfg_.particles); }
   std::size_t max_frames() const { return std::max<std::size_t>(1, (std::size_t{1} << 24) / (3 * n())); }
   static int msd_interval(const WaterConfig& cfg, std::int64_t production, std::size_t max_frames) {
@@ -90,6 +100,7 @@ class WaterObserver : public SceneObserver {
 
   const WaterConfig& cfg_;
   RunResult& r_;
+  const RunHooks& hooks_;
   const bool tap_zeta_;  // the ζ moments ride with the observables (a benchmark turns both off and pays for neither)
   const std::int64_t production_;
   const int rdf_every_, msd_every_;
@@ -153,7 +164,7 @@ RunResult run_water(const WaterConfig& in, const RunHooks& hooks) {
 
   RunResult r;
   label(cfg, n, L, r);
-  WaterObserver obs(cfg, r, L);
+  WaterObserver obs(cfg, r, L, hooks);
 
   std::vector<std::int64_t> raw_steps = cfg.taps.raw_steps;
   std::sort(raw_steps.begin(), raw_steps.end());
@@ -171,6 +182,7 @@ RunResult run_water(const WaterConfig& in, const RunHooks& hooks) {
     // The configurational temperature on the sampled production steps (those of the velocity PDF).
     pair->sum_configurational(production && cfg.observables &&
                               (current - cfg.equilibrate - 1) % cfg.sample_every == 0);
+    pair->tap_in_range(current >= cfg.taps.in_range_first && current <= cfg.taps.in_range_last);
     const ForceSums f = pair->compute(sys, v, static_cast<std::uint64_t>(current), tap_raw, tap_series,
                                       obs.tap_zeta() && production, r.taps);
     counted.seconds += seconds_between(t0, SceneClock::now());

@@ -37,8 +37,27 @@ namespace {
 // swap would be needed, so refuse to build there rather than read garbage.
 static_assert(std::endian::native == std::endian::little);
 
+// Text where raw words belong (dpdrng gen's default hex lines, a column of numbers): 64 bytes or more, each
+// printable ASCII or white space, one of them a line break. Random 64-bit words look so with a probability
+// below 10^-26 (a random byte is text with probability 98/256); doubles even less often, their sign-and-exponent
+// bytes being mostly outside ASCII.
+bool looks_like_text(std::span<const char> bytes) {
+  if (bytes.size() < 64) return false;
+  bool line = false;
+  for (const char c : bytes) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '\n') line = true;
+    if (!((u >= 0x20 && u < 0x7f) || c == '\n' || c == '\r' || c == '\t')) return false;
+  }
+  return line;
+}
+
 template <class Word>
 std::vector<Word> words_of(std::span<const char> bytes, std::string_view source) {
+  if (looks_like_text(bytes))
+    throw InputError(std::string(source) +
+                     ": the input is text (hex lines of gen without --format raw?), not raw 8-byte values; write "
+                     "binary words with gen --format raw, or read one number a line with --format text");
   if (bytes.size() % sizeof(Word) != 0)
     throw InputError(std::string(source) + ": " + std::to_string(bytes.size()) +
                      " bytes is not a whole number of 8-byte words (truncated input?)");

@@ -2,6 +2,7 @@
 // computed right), nothing is lost and nothing half-written. docs/bad-input.md lists each class with the test
 // here that keeps it true (BadInputDoc checks that the two agree).
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -103,15 +104,47 @@ TEST(BadInput, NistPerTestOptionsInheritFromTheParent) {
   expect_bad("nist --serial-m 5 runs --format raw -i " + f, "--serial-m is an option of the whole battery");
 }
 
-TEST(BadInput, NistAsciiRefusesBinaryInput) {
+TEST(BadInput, NistAsciiRefusesAnythingButBits) {
   const std::string f = file_with(".raw", random_bytes(4000, 6));
   expect_bad("nist -i " + f, "--format raw");
-  expect_bad("nist runs -i " + f, "not text");
-  // Text with other characters is still read as the reference reads it: '0'/'1' kept, the rest skipped.
-  const std::string t = file_with(".txt", "# bits of a test\n0110 1001\r\n1111 0000 x\n");
+  expect_bad("nist runs -i " + f, "input is not an ASCII bit string");
+  // Hex digits, a comment, a stray letter: refused at their offset, where the reference would skip them and test
+  // the stray '0' and '1' characters.
+  expect_bad("nist frequency -i " + file_with(".txt", "0110 1001\r\n1111 0000 x\n"),
+             "input is not an ASCII bit string: byte 'x' at offset 21; for binary words (gen --format raw) use "
+             "--format raw");
+  expect_bad("nist -i " + file_with(".hash", "# bits\n0110\n"), "byte '#' at offset 0");
+  // gen's default output (hex lines) into nist's default format (ascii), through a pipe.
+  const std::string cli = "\"" DPDRNG_CLI_PATH "\"";
+  const std::string err = scratch(".err");
+  const std::string pipe = "bash -c 'set -o pipefail; " + cli + " gen -g tea32 -r 1 --count 2000 | " + cli +
+                           " nist --input - 2> \"" + err + "\"'";
+  const int status = std::system(pipe.c_str());
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 2) << status;
+  EXPECT_NE(slurp(err).find("input is not an ASCII bit string: byte "), std::string::npos) << slurp(err);
+  std::remove(err.c_str());
+  // Bits with white space of every kind are read as they are.
+  const std::string t = file_with(".bits", "0110 1001\r\n1111\t0000\v\f\n");
   const Result r = run("nist frequency -i " + t + " --json");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(nlohmann::json::parse(r.out)["stream_bits"], 16);
+}
+
+// Text where raw words belong: gen's hex lines given to a reader of u64 or f64 (which would take 17-byte lines as
+// 8-byte words whenever the line count is a multiple of 8).
+TEST(BadInput, TextGivenAsRawWordsIsRefused) {
+  const Result hex = run("gen -g tea32 -r 1 --count 32640");
+  ASSERT_EQ(hex.code, 0);
+  ASSERT_EQ(hex.out.size() % 8, 0u);
+  const std::string f = file_with(".hex", hex.out);
+  for (const std::string cmd : {"chi2 --format u64", "ttest --format u64", "moments --format f64",
+                                "gof --format f64 --target gauss", "chi2d --format u64"})
+    expect_bad(cmd + " --input " + f, "the input is text (hex lines of gen without --format raw?)");
+  std::string column;
+  for (int k = 1; k < 32; ++k) column += std::to_string(k / 32.0) + "\n";
+  const std::string numbers = file_with(".txt", column);
+  expect_bad("chi2 --format u64 --input " + numbers, "--format text");
+  EXPECT_EQ(run("chi2 --format text --input " + numbers).code, 0);
 }
 
 TEST(BadInput, NistStreamOptions) {
@@ -269,6 +302,33 @@ TEST(BadInput, SimulateSeriesDirCheckedFirst) {
   ASSERT_EQ(run("simulate -n 64 --steps 20 --equilibrate 10 -q --series " + dir).code, 0);
   EXPECT_TRUE(fs::is_regular_file(dir + "/series.csv"));
   fs::remove_all(scratch(".series"));
+}
+
+TEST(BadInput, SimulateTapOptions) {
+  const std::string f = scratch(".tap");
+  const std::string tiny = "simulate -n 64 --steps 20 --equilibrate 10 -q ";
+  expect_all_bad(tiny, {{"--tap-steps 11:20", "--tap-steps: needs --tap-words or --tap-zeta"},
+                        {"--tap-zeta " + f + " --tap-steps 15", "--tap-steps: '15' is not A:B"},
+                        {"--tap-zeta " + f + " --tap-steps 15:12", "--tap-steps '15:12'"},
+                        {"--tap-zeta " + f + " --tap-steps 10:20", "outside the production steps 11:20"},
+                        {"--tap-zeta " + f + " --tap-steps 11:21", "outside the production steps 11:20"},
+                        {"--tap-zeta " + f + " --tap-steps -1:5", "--tap-steps"},
+                        {"--tap-zeta ''", "--tap-zeta: an empty path"},
+                        {"--tap-words " + f + " --tap-zeta " + f, "' is also --tap-words"},
+                        {"--tap-words " + f + ".json --tap-zeta " + f, "is also --tap-words"},
+                        {"--integrator shardlow --tap-zeta " + f, "--tap-zeta: --integrator shardlow"},
+                        {"--integrator pnhln --tap-words " + f, "--tap-words: --integrator pnhln"},
+                        {"--scene bilayer --tap-words " + f, "--tap-words: the water scene only"}});
+  // 10^9 steps would run for days: the paths must be refused before the first one.
+  const std::string dir = scratch(".tapdir");
+  fs::create_directories(dir);
+  expect_bad("simulate --steps 1000000000 -q --tap-zeta " + dir, "': is a directory");
+  expect_bad("simulate --steps 1000000000 -q --tap-words " + dir + "/no/w", "': no directory");
+  fs::create_directories(dir + "/w.json");
+  expect_bad("simulate --steps 1000000000 -q --tap-words " + dir + "/w", "--tap-words's sidecar");
+  EXPECT_FALSE(fs::exists(f));
+  EXPECT_FALSE(fs::exists(f + ".json"));
+  fs::remove_all(dir);
 }
 
 TEST(BadInput, UnstableSimulateHasNoObservables) {

@@ -111,6 +111,34 @@ TEST(CliGen, ClosedPipeIsANormalEnd) {
   std::remove(status.c_str());
 }
 
+// --count inf writes the stream until the reader stops: `| head -c 1000000` gets the stream's first million bytes
+// (the words of --count 125000) and gen exits 0, not by SIGPIPE; a full device ends it with exit 1; a count that
+// is neither a number nor inf is refused.
+TEST(CliGen, EndlessCountStreamsUntilThePipeCloses) {
+  const std::string bytes = scratch(".bytes"), status = scratch(".status");
+  for (const char* format : {"raw", "hex"}) {
+    const std::string cmd = std::string("bash -c '\"" DPDRNG_CLI_PATH "\" gen -g tea32 -r 4 --count inf --format ") +
+                            format + " | head -c 1000000 > \"" + bytes + "\"; echo ${PIPESTATUS[0]} > \"" + status +
+                            "\"'";
+    ASSERT_EQ(std::system(cmd.c_str()), 0);
+    EXPECT_EQ(slurp(status), "0\n") << format << ": gen's exit status (141 = killed by SIGPIPE)";
+    const Result finite = run(std::string("gen -g tea32 -r 4 --count 125000 --format ") + format);
+    ASSERT_EQ(finite.code, 0);
+    EXPECT_TRUE(slurp(bytes) == finite.out.substr(0, 1000000)) << format;
+  }
+  // Not through run(), whose own redirection would send the endless stream to a file; `timeout` bounds a hang.
+  const std::string full_err = scratch(".full");
+  const int full = std::system(("timeout 60 \"" DPDRNG_CLI_PATH "\" gen --count inf --format raw > /dev/full 2> \"" +
+                                full_err + "\"").c_str());
+  EXPECT_EQ(WIFEXITED(full) ? WEXITSTATUS(full) : -1, 1);
+  EXPECT_NE(slurp(full_err).find("write error: standard output"), std::string::npos) << slurp(full_err);
+  std::remove(full_err.c_str());
+  expect_bad("gen --count infinity", "--count");
+  expect_bad("gen --count -1", "or inf");
+  std::remove(bytes.c_str());
+  std::remove(status.c_str());
+}
+
 // raw to a terminal is refused; util-linux `script` gives the command a pseudo-terminal as stdout.
 TEST(CliGen, RawToATerminalIsRefused) {
   if (std::system("command -v script > /dev/null 2>&1") != 0) GTEST_SKIP() << "util-linux script not installed";

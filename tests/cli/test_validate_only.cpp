@@ -34,6 +34,8 @@ TEST(ValidateOnly, ValidArgumentsExitZeroWithoutWorkOrFiles) {
   const std::string d = t.path.string();
   const std::vector<std::string> valid = {
       "gen -g tea32 -r 1 --count 1000000000000 --format raw",
+      "gen -g tea32 -r 1 --count inf --format raw",
+      "simulate --steps 100000000 --tap-zeta " + d + "/z.f64 --tap-words " + d + "/w.u64 --tap-steps 600:700",
       "chi2 -i " + d + "/missing.u64 -f u64 --per 1000",
       "corr -i " + d + "/missing.f64 -f f64 --pairs 8 --offsets 1,2",
       "nist runs -i " + d + "/missing.bits --format raw",
@@ -55,6 +57,7 @@ TEST(ValidateOnly, InvalidArgumentsExitTwoWithoutFiles) {
   expect_bad("--validate-only corr -i " + d + "/missing -f f64 --offsets 1", "--offsets needs --pairs");
   expect_bad("--validate-only chi2d -i " + d + "/missing -f text --pairs halves", "--pairs halves");
   expect_bad("--validate-only simulate --dt nan --series " + d + "/series", "--dt");
+  expect_bad("--validate-only simulate --tap-zeta " + d + "/z --tap-steps 1:2", "--tap-steps");
   expect_bad("--validate-only study run " + kSource + "/study/ci.toml --shard 0/1 --out " + d + "/study", "--shard");
   expect_bad("--validate-only study run " + d + "/missing.toml", "missing.toml");
   expect_bad("--validate-only bench dpd --scaling-only --no-scaling", "--scaling-only");

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Writes that fail part-way: `study run`, `study report`, `study merge`, `simulate --series` and `nist` under the
-# write-fault shim (write_fault.c), whose writes to regular files fail with ENOSPC or EIO after N bytes. Each run
-# must exit 1 with "write error" (no signal), leave no temporary file, lose no cell that was stored before it,
-# and a rerun without the fault must complete the study with the results of a clean run.
+# Writes that fail part-way: `study run`, `study report`, `study merge`, `simulate --series`, `simulate --tap-zeta`
+# and `nist` under the write-fault shim (write_fault.c), whose writes to regular files fail with ENOSPC or EIO
+# after N bytes. Each run must exit 1 with "write error" (no signal), leave no temporary file, lose no cell that
+# was stored before it, and a rerun without the fault must complete the study with the results of a clean run;
+# the taps' files are all whole or all absent.
 # Usage: run.sh DPDRNG SHIM SCRATCH_DIR
 set -uo pipefail
 bin=$(realpath "$1") shim=$(realpath "$2") work=$3
@@ -90,6 +91,18 @@ for step in "study run study.toml --out clean -t 1" "study run study.toml --out 
   "$bin" $step 2>/dev/null || { echo "FAIL: $step without a fault" >&2; exit 1; }
 done
 "$bin" gen --count 20000 --format raw >bits.raw || { echo "FAIL: gen without a fault" >&2; exit 1; }
+taps=(simulate --particles 64 --steps 40 --equilibrate 10)
+mkdir -p tapsclean
+"$bin" "${taps[@]}" --tap-zeta tapsclean/z.f64 --tap-words tapsclean/w.u64 >/dev/null ||
+  { echo "FAIL: simulate --tap-zeta without a fault" >&2; exit 1; }
+# The taps' files after a faulty run: all four whole (as a clean run's) or none.
+taps_whole_or_absent() {
+  local d=$1 f present=0
+  for f in z.f64 z.f64.json w.u64 w.u64.json; do [[ -e $d/$f ]] && present=$((present + 1)); done
+  ((present == 0)) && return 0
+  ((present == 4)) || { fail "simulate --tap-zeta N=$N: $present of the 4 tap files left"; return 1; }
+  for f in z.f64 w.u64; do cmp -s "$d/$f" "tapsclean/$f" || fail "simulate --tap-zeta N=$N: $f differs"; done
+}
 
 k=0
 for N in 0 700 5000 40000 120000 190000 250000; do
@@ -123,6 +136,10 @@ for N in 0 700 5000 40000 120000 190000 250000; do
   # simulate --series and nist (its report on standard output, redirected to the full disk).
   d=series$N
   faulty "simulate --series" "$d" "$bin" simulate --particles 64 --steps 40 --equilibrate 10 --series "$d"
+  d=taps$N
+  mkdir -p "$d"
+  faulty "simulate --tap-zeta" "$d" "$bin" "${taps[@]}" --tap-zeta "$d/z.f64" --tap-words "$d/w.u64"
+  taps_whole_or_absent "$d"
   d=nist$N
   mkdir -p "$d"
   DPDRNG_FAULT_AFTER=$N DPDRNG_FAULT_ERRNO=$ERR LD_PRELOAD=$shim "$bin" nist --input bits.raw --format raw \

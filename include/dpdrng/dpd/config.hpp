@@ -42,6 +42,11 @@ struct TapConfig {
   std::vector<std::int64_t> raw_steps;
   // Pairs (i < j) whose raw words and ζ are kept for every production step.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  // Production steps in_range_first..in_range_last whose pairs inside r_c (InRangeTap) go to
+  // RunHooks::in_range, each step once it has passed the run's guards: the steps and pairs whose ζ the result's
+  // zeta sums hold. in_range_last < in_range_first: none.
+  std::int64_t in_range_first = 0, in_range_last = -1;
+  bool in_range() const { return in_range_last >= in_range_first; }
 };
 
 // Limits that keep a run meaningful in double precision; InputError "invalid <field>: <why>" otherwise.

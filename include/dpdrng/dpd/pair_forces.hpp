@@ -72,9 +72,24 @@ struct PairSeries {
   std::vector<double> zeta;
 };
 
+// The pairs inside r_c of one force evaluation, whose ζ entered the force, in the canonical order: by bead
+// indices (i, j), i < j, ascending (whatever the pair mode, the sorting into cells or the thread count). Per pair:
+// its key (i << 32) | j, the words_per_pair words its ζ came from (the block's words, then under the blocks feed
+// the second block's) and the ζ itself.
+struct InRangeTap {
+  std::int64_t step = -1;
+  int words_per_pair = 1;
+  std::vector<std::uint64_t> keys, words;
+  std::vector<double> zeta;
+
+  std::size_t size() const { return keys.size(); }
+  void clear() { keys.clear(), words.clear(), zeta.clear(); }
+};
+
 struct Taps {
   std::vector<RawTap> raw;
   std::vector<PairSeries> series;
+  InRangeTap in_range;  // the last compute() under tap_in_range(true)
 };
 
 // Velocities used by the dissipative force (Groot–Warren's predicted ṽ).
@@ -103,9 +118,13 @@ class PairForces {
   // Whether the following compute() calls sum the configurational temperature's parts (a scatter per pair: the
   // sampled steps only).
   void sum_configurational(bool on) { configurational_ = on; }
+  // Whether the following compute() calls record their pairs inside r_c in Taps::in_range (a baseline without
+  // noise records nothing).
+  void tap_in_range(bool on) { tap_in_range_ = on; }
 
  protected:
   bool configurational_ = false;
+  bool tap_in_range_ = false;
 };
 
 // Chooses the noise policy (hash via rng::with_pair_noise, the mt19937 stream, or a benchmark baseline) and

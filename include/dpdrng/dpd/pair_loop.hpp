@@ -92,6 +92,7 @@ struct RowBatch {
   std::size_t slot;
   std::uint64_t* tap[2];  // non-null: every pair's words go to tap[w][t]
   double* zeta;           // out: ζ of the pairs with r² < rc2, in order
+  std::uint64_t* used;    // non-null: the words ζ came from of the pairs with r² < rc2 (NoiseKernel::used_words)
 };
 
 // A batch of k pairs (i[t], j[t]) inside r_c: a layer's in cells mode (bead ids in any order: the inputs are made
@@ -105,6 +106,7 @@ struct PairBatch {
   std::size_t slot;       // the first pair's slot (the stream reference's order)
   std::uint64_t* tap[2];  // non-null: the pairs' words go to tap[w][t]
   double* zeta;           // out: ζ of the k pairs
+  std::uint64_t* used;    // non-null: the words ζ came from (NoiseKernel::used_words), pair after pair
 };
 
 // The per-noise part of the pair loop: generator, seeding and distribution inline here, in one batch call.
@@ -116,6 +118,9 @@ class NoiseKernel {
   virtual bool stream() const = 0;  // needs begin_step with the number of pairs before a step's first batch
   virtual bool zero() const = 0;    // the ζ = 0 baseline: the loop calls nothing below
   virtual rng::Feed feed() const = 0;
+  // The words a pair's ζ is made from, as a batch's `used` receives them: the block's words(), then, under the
+  // blocks feed, the second block's.
+  int used_words() const { return words() * (feed() == rng::Feed::blocks ? 2 : 1); }
   virtual void threads(int count) = 0;
   virtual void begin_step(std::size_t slots) = 0;
   // Returns the number of pairs inside r_c (their ζ in b.zeta).

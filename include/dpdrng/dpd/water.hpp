@@ -24,6 +24,8 @@ struct RunHooks {
   // Called after every completed step (equilibration included) with the state at its end: positions
   // wrapped, velocities v(t+Δt), forces of that step. For tests and custom observables; costs nothing unset.
   std::function<void(std::int64_t step, const System& s)> observe;
+  // Called with the pairs inside r_c of each step of cfg.taps.in_range that passed the guards, in step order.
+  std::function<void(const InRangeTap& tap)> in_range;
 };
 
 RunResult run_water(const WaterConfig& cfg, const RunHooks& hooks = {});

@@ -17,8 +17,10 @@ enum class InputFormat {
 InputFormat parse_input_format(std::string_view name);  // throws InputError naming the formats
 std::string_view to_string(InputFormat f);
 
-// Decodes a whole input. Throws InputError for: no values, a byte count that is not a multiple of 8 (u64, f64),
-// a text line that is not exactly one number, and any NaN or infinite value. `source` names the input in errors.
+// Decodes a whole input. Throws InputError for: no values, text given as u64 or f64 (64 bytes or more, all
+// printable ASCII or white space with a line break: hex lines of gen without --format raw), a byte count that is
+// not a multiple of 8 (u64, f64), a text line that is not exactly one number, and any NaN or infinite value.
+// `source` names the input in errors.
 std::vector<double> decode_values(std::span<const char> bytes, InputFormat format, std::string_view source);
 
 // Reads `path` ("-" = standard input) completely and decodes it. Throws InputError when it cannot be opened.

@@ -1,8 +1,8 @@
 #pragma once
-// Reading bit streams the way the reference suite does: ASCII '0'/'1' (other text skipped) or raw bytes, most
-// significant bit of each byte first; from a file or standard input ("-"). ASCII input holding a byte that is not
-// text (a control character other than white space, or >= 0x80) is refused as binary data: the reference would
-// test the few stray '0'/'1' bytes of a binary file.
+// Reading bit streams: ASCII '0'/'1' with white space between them, or raw bytes, most significant bit of each
+// byte first; from a file or standard input ("-"). ASCII input holding any other byte (a hex digit, a comment,
+// binary data) is refused with its offset: the reference would skip it and test the stray '0'/'1' characters of
+// hex text or of a binary file, a mismatch no P-value reveals.
 #include <cstddef>
 #include <cstdint>
 #include <istream>
