@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Runs the dpdrng commands a document shows: in every fenced ```sh block of each FILE.md, each line that starts
-# with `dpdrng ` (after an optional `$ `; a line ending in `\` goes on on the next), except the lines that end
-# with `# not run` (too long for a test, or needing what a test machine lacks). Each runs under bash with
-# `set -o pipefail`, the build's dpdrng first on PATH, in a scratch directory of its document (so a later line
-# may read what an earlier one wrote) where the source tree's study/, examples/ and tools/ are linked (so that
-# `study/ci.toml` names the committed config), and must exit 0 within 300 s.
+# with `dpdrng ` or `cc ` (a plug-in built for the lines after it; after an optional `$ `; a line ending in `\`
+# goes on on the next), except the lines that end with `# not run` (too long for a test, or needing what a test
+# machine lacks). Each runs under bash with `set -o pipefail`, the build's dpdrng first on PATH, in a scratch
+# directory of its document (so a later line may read what an earlier one wrote) where the source tree's study/,
+# examples/, include/ and tools/ are linked (so that `study/ci.toml` names the committed config and a plug-in
+# finds dpdrng/plugin.h), and must exit 0 within 300 s.
 # Usage: doc_pipes.sh DPDRNG SOURCE_DIR SCRATCH_DIR FILE.md... (FILE relative to SOURCE_DIR or absolute)
 # Prints "FAIL (exit N): <command>" for each failure and a summary line; exits 1 if any command failed.
 set -uo pipefail
@@ -23,7 +24,7 @@ commands_of() {
     {
       line = $0
       sub(/^\$ /, "", line)
-      if (line !~ /^dpdrng /) next
+      if (line !~ /^(dpdrng|cc) /) next
       if (line ~ /\\$/) { pending = line; next }
       print_cmd(line)
     }
@@ -42,7 +43,7 @@ for doc in "$@"; do
   [[ -f $doc ]] || { echo "FAIL: no such document: $doc"; failed=$((failed + 1)); continue; }
   dir="$scratch/$(basename "$doc" .md)"
   mkdir -p "$dir"
-  for d in study examples tools; do ln -s "$source/$d" "$dir/$d"; done
+  for d in study examples include tools; do ln -s "$source/$d" "$dir/$d"; done
   mapfile -t cmds < <(commands_of "$doc" 2>"$dir/.skipped")
   skipped=$((skipped + $(cat "$dir/.skipped")))
   for cmd in "${cmds[@]}"; do
