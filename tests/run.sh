@@ -40,6 +40,13 @@ installed="$prefix/install/bin/dpdrng"
 cmp <("$installed" gen -g "ext:$prefix/tea32/libtea32.so" --count 100000 --format raw) \
     <("$installed" gen -g tea32 -r 4 --count 100000 --format raw)
 "$installed" simulate -g "ext:$prefix/fmix64/libfmix64.so" -n 256 --steps 200 --equilibrate 50 -q >/dev/null
+# A two-cell study of the plug-in (its variant and the MT19937 reference), pinned by its digest.
+digest=$(sha256sum "$prefix/tea32/libtea32.so" | cut -d' ' -f1)
+printf '%s\n' '[study]' 'name = "plugin"' 'replicas = 1' '[sweep]' 'distributions = ["gauss"]' '[[sweep.generator]]' \
+  "name = \"ext:$prefix/tea32/libtea32.so\"" "sha256 = \"$digest\"" '[scene]' 'particles = 32' 'steps = 100' \
+  'equilibrate = 10' '[tests]' 'ttest_pairs = 4' 'chi2_steps = 4' 'nist_generators = []' >"$prefix/plugin.toml"
+"$installed" study run "$prefix/plugin.toml" --out "$prefix/plugin-study" >/dev/null
+[[ $(ls "$prefix/plugin-study/cells" | wc -l) == 2 ]]
 if [[ "${DPDRNG_SANITIZE:-0}" == 1 ]]; then
   step "ASan+UBSan build"
   cmake --preset asan -DDPDRNG_BUILD_TESTS=ON >/dev/null
