@@ -16,6 +16,7 @@
 #include "dpdrng/dpd/water.hpp"
 #include "dpdrng/rng/registry.hpp"
 #include "dpdrng/stats/moments.hpp"
+#include "dpdrng/version.hpp"
 #include "bilayer_cli.hpp"
 #include "csv_out.hpp"
 #include "simulate_physics.hpp"
@@ -146,6 +147,29 @@ nlohmann::json simulate_json(const dpd::RunResult& r) {
   return j;
 }
 
+// What a reader needs to redo the run: every setting that changes its numbers.
+nlohmann::json inputs_json(const dpd::WaterConfig& c) {
+  return {{"particles", c.particles},       {"density", c.density},
+          {"a", c.a},                       {"rc", c.rc},
+          {"kT", c.kT},                     {"gamma", c.gamma},
+          {"lambda", c.lambda},             {"dt", c.dt},
+          {"integrator", c.integrator_name()}, {"steps", c.steps},
+          {"equilibrate", c.equilibrate},   {"pairs", dpd::to_string(c.pairs)},
+          {"generator", c.generator.name},  {"rounds", c.generator.rounds},
+          {"key", c.generator.key},         {"seeding", rng::to_string(c.seeding)},
+          {"distribution", rng::to_string(c.distribution)}, {"feed", rng::to_string(c.feed)},
+          {"seed", c.seed},                 {"init_seed", c.init_seed},
+          {"sample_every", c.sample_every}, {"threads", c.threads}};
+}
+
+// The document's identity for readers that outlive this version: the tool's version, the schema and the inputs.
+nlohmann::json stamped(nlohmann::json j, const dpd::WaterConfig& c) {
+  j["dpdrng_version"] = dpdrng::kVersion;
+  j["schema"] = "dpdrng.simulate.water/1";
+  j["inputs"] = inputs_json(c);
+  return j;
+}
+
 // The run's config with the reference generator: the same feed, seeding, integrator, Δt and initial state.
 dpd::WaterConfig reference_config(dpd::WaterConfig cfg, const std::string& name) {
   try {
@@ -193,7 +217,7 @@ void run_simulate(SimulateArgs& a, const CLI::App& sub) {
       const nlohmann::json j = {{"variant", simulate_json(r)},
                                 {"reference", simulate_json(ref)},
                                 {"shifts", compare_shifts_json(r, ref)}};
-      std::cout << j.dump(2) << "\n";
+      std::cout << stamped(j, cfg).dump(2) << "\n";
       return;
     }
     print_human(r);
@@ -203,7 +227,7 @@ void run_simulate(SimulateArgs& a, const CLI::App& sub) {
     return;
   }
   if (a.run.json) {
-    std::cout << simulate_json(r).dump(2) << "\n";
+    std::cout << stamped(simulate_json(r), cfg).dump(2) << "\n";
   } else {
     print_human(r);
     std::cout << reference_note(r);

@@ -133,7 +133,8 @@ TEST(CliSimulate, TinyWaterRunGivesTheIssuesJson) {
   EXPECT_LT(j.at("temperature_mean").get<double>(), 2.0);
   const std::set<std::string> want = {
       "box_length", "configurational_temperature", "diffusion_coefficient", "diffusion_coefficient_sem",
-      "distribution", "feed", "generator", "integrator", "not_applicable", "pressure_components",
+      "distribution", "dpdrng_version", "feed", "generator", "inputs", "integrator", "not_applicable",
+      "pressure_components", "schema",
       "temperature_components",
       "momentum_drift_per_bead", "momentum_final", "msd_fit", "pairs", "particles", "pressure",
       "pressure_conservative", "pressure_conservative_diag", "pressure_conservative_mean",
@@ -142,6 +143,10 @@ TEST(CliSimulate, TinyWaterRunGivesTheIssuesJson) {
       "timings", "velocity_pdf_error_rate", "velocity_pdf_error_rate_measured_T", "velocity_pdf_error_rate_sem",
       "velocity_pdf_error_rate_xyz", "zeta", "zeta_sums"};
   EXPECT_EQ(keys(j), want);
+  EXPECT_EQ(j.at("schema"), "dpdrng.simulate.water/1");
+  EXPECT_EQ(j.at("inputs").at("particles"), 64);
+  EXPECT_EQ(j.at("inputs").at("steps"), 20);
+  EXPECT_EQ(j.at("inputs").at("generator"), "tea32");
   // 10 production steps sample the configurational temperature once: no error to give, so null with the reason.
   EXPECT_TRUE(j.at("configurational_temperature").is_null());
   EXPECT_TRUE(j.at("not_applicable").at("configurational_temperature").is_string());
