@@ -14,6 +14,8 @@
 #include "dpdrng/cli/registry.hpp"
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/common/output.hpp"
+#include "dpdrng/rng/registry.hpp"
+#include "dpdrng/version.hpp"
 
 namespace dpdrng::cli {
 namespace cmd_bilayer {
@@ -95,6 +97,29 @@ const bool registered = register_command(41, [](CLI::App& root) {
 }  // namespace
 }  // namespace cmd_bilayer
 
+namespace cmd_bilayer {
+namespace {
+// The document's identity for readers that outlive this version, and every setting that changes its numbers.
+nlohmann::json stamped(nlohmann::json j, const dpd::BilayerConfig& c) {
+  j["dpdrng_version"] = dpdrng::kVersion;
+  j["schema"] = "dpdrng.simulate.bilayer/1";
+  j["inputs"] = {{"box", c.box},           {"lipids_per_leaflet", c.lipids_per_leaflet},
+                 {"particles", c.particles}, {"a", c.a},
+                 {"rc", c.rc},             {"kT", c.kT},
+                 {"gamma", c.gamma},       {"lambda", c.lambda},
+                 {"dt_warmup", c.dt_warmup}, {"dt", c.dt},
+                 {"warmup", c.warmup},     {"steps", c.steps},
+                 {"equilibrate", c.equilibrate}, {"pairs", dpd::to_string(c.pairs)},
+                 {"generator", c.generator.name}, {"rounds", c.generator.rounds},
+                 {"key", c.generator.key}, {"seeding", rng::to_string(c.seeding)},
+                 {"distribution", rng::to_string(c.distribution)}, {"feed", rng::to_string(c.feed)},
+                 {"seed", c.seed},         {"init_seed", c.init_seed},
+                 {"sample_every", c.sample_every}, {"threads", c.threads}};
+  return j;
+}
+}  // namespace
+}  // namespace cmd_bilayer
+
 void run_bilayer_scene(const dpd::BilayerConfig& in, bool json, bool quiet, const std::string& series_dir) {
   dpd::BilayerConfig cfg = in;
   cfg.series = !series_dir.empty();
@@ -110,7 +135,7 @@ void run_bilayer_scene(const dpd::BilayerConfig& in, bool json, bool quiet, cons
   const dpd::BilayerResult r = dpd::run_bilayer(cfg, hooks);
   if (!series_dir.empty()) cmd_bilayer::write_series(series_dir, r);
   if (json)
-    std::cout << dpd::to_json(r, false).dump(2) << "\n";
+    std::cout << cmd_bilayer::stamped(dpd::to_json(r, false), cfg).dump(2) << "\n";
   else
     cmd_bilayer::print_human(r);
 }

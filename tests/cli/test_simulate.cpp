@@ -165,7 +165,8 @@ TEST(CliSimulate, TinyBilayerRunGivesItsJsonAlikeFromEitherCommand) {
   const json b = run_json("simulate-bilayer -q --steps 20 --equilibrate 10 --warmup 10 --threads 1");
   EXPECT_EQ(a.at("status"), "ok");
   const std::set<std::string> want = {
-      "bilayer_thickness", "bilayer_thickness_sem", "box", "distribution", "feed", "generator", "head_separation",
+      "bilayer_thickness", "bilayer_thickness_sem", "box", "distribution", "dpdrng_version", "feed", "generator",
+      "head_separation", "inputs", "schema",
       "head_separation_sem", "lipids", "lipids_out_max", "membrane_tension", "membrane_tension_conservative",
       "membrane_tension_conservative_sem", "membrane_tension_convention", "membrane_tension_sem",
       "membrane_tension_without_bend_virial", "membrane_tension_without_bond_virial", "momentum_drift_per_bead",
