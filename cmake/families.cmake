@@ -15,6 +15,7 @@ set(DPDRNG_KEYED_FAMILIES
   splitmix64=splitmix.hpp
   saru=saru.hpp
   defect=defect.hpp
+  squares64=squares.hpp
 )
 
 set(DPDRNG_FAMILY_INCLUDE ${PROJECT_BINARY_DIR}/families/include)
