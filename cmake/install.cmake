@@ -13,6 +13,8 @@ install(DIRECTORY include/dpdrng/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/dpdrng
   FILES_MATCHING PATTERN "*.hpp" PATTERN "cli" EXCLUDE)
 install(FILES ${DPDRNG_GENERATED_INCLUDE}/dpdrng/version.hpp include/dpdrng/plugin.h
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/dpdrng)
+install(FILES ${DPDRNG_FAMILY_INCLUDE}/dpdrng/rng/families.hpp ${DPDRNG_FAMILY_INCLUDE}/dpdrng/rng/family_headers.hpp
+  DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/dpdrng/rng)
 install(EXPORT dpdrngTargets NAMESPACE dpdrng:: DESTINATION ${DPDRNG_CMAKE_DIR})
 
 configure_package_config_file(cmake/dpdrngConfig.cmake.in ${PROJECT_BINARY_DIR}/dpdrngConfig.cmake

@@ -87,8 +87,7 @@ void run_gen(const GenArgs& a) {
   if (rng::parse_seeding(a.seeding) != rng::Seeding::counter)
     throw InputError("gen writes standalone streams: --seeding must be 'counter' (pair seedings need a DPD run)");
   // Counter-mode generators hash start+i: past 2^64 - 1 the counter would wrap to 0 and repeat the stream's start.
-  const rng::Family family = rng::find_generator(spec.name).family;
-  if (family != rng::Family::splitmix64 && family != rng::Family::mt19937 && count > 0 &&
+  if (rng::find_generator(spec.name).counter_stream && count > 0 &&
       a.start > std::numeric_limits<std::uint64_t>::max() - (count - 1))
     throw InputError("--start " + std::to_string(a.start) + " with --count " + std::to_string(count) +
                      ": the counter would pass 2^64 - 1 and wrap to 0");

@@ -28,10 +28,7 @@ rng::GeneratorSpec GeneratorOptions::spec() const {
   for (std::size_t i = 0; i < 4; ++i) s.key[i] = words[i];
   s = rng::validated(s);
   if (key_option && key_option->count() > 0) {
-    const rng::Family f = rng::find_generator(s.name).family;
-    const bool keyed = f == rng::Family::tea32 || f == rng::Family::tea64 || f == rng::Family::philox4x32 ||
-                       f == rng::Family::threefry2x64 || f == rng::Family::defect;
-    if (!keyed) throw InputError("--key: " + s.name + " takes no key (the key words would change nothing)");
+    if (!rng::find_generator(s.name).takes_key) throw InputError("--key: " + s.name + " takes no key (the key words would change nothing)");
   }
   return s;
 }

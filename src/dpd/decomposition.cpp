@@ -53,19 +53,9 @@ std::unique_ptr<DecomposedForces> make_decomposed_forces(const DecompNoise& nois
   // Every decomposition seeding but pair-step hashes a separation (grid and canonical included).
   rng::check_seeding(spec, noise.seeding.kind == DecompSeedingKind::pair_step ? rng::Seeding::pair_step
                                                                               : rng::Seeding::distance);
-  switch (rng::family_of(spec.name)) {
-    case rng::Family::tea32: return detail::make_decomposed<rng::Family::tea32>(spec, noise, kernel, domains);
-    case rng::Family::tea64: return detail::make_decomposed<rng::Family::tea64>(spec, noise, kernel, domains);
-    case rng::Family::philox4x32: return detail::make_decomposed<rng::Family::philox4x32>(spec, noise, kernel, domains);
-    case rng::Family::threefry2x64:
-      return detail::make_decomposed<rng::Family::threefry2x64>(spec, noise, kernel, domains);
-    case rng::Family::splitmix64: return detail::make_decomposed<rng::Family::splitmix64>(spec, noise, kernel, domains);
-    case rng::Family::saru: return detail::make_decomposed<rng::Family::saru>(spec, noise, kernel, domains);
-    case rng::Family::defect: return detail::make_decomposed<rng::Family::defect>(spec, noise, kernel, domains);
-    case rng::Family::plugin: return detail::make_decomposed<rng::Family::plugin>(spec, noise, kernel, domains);
-    case rng::Family::mt19937: break;
-  }
-  rng::throw_not_keyed_hash(spec.name);
+  return rng::visit_keyed_family(rng::family_of(spec.name), spec.name, [&]<rng::Family F>() {
+    return detail::make_decomposed<F>(spec, noise, kernel, domains);
+  });
 }
 
 }  // namespace dpdrng::dpd

@@ -2,8 +2,9 @@
 // Internal to src/dpd: the decomposed force loop (decomposition.hpp) for one keyed hash, and make_decomposed,
 // which picks the family's hash. The check's time goes to its geometry (two views of every pair), not to the
 // hash: every round count runs the runtime-rounds hash and the distribution is a run-time field, so there is one
-// instantiation per generator type. Each family's is in its own decomposition_<family> file, which includes that
-// family's generator header, so that a generator header rebuilds only its own family's.
+// instantiation per generator type. The families of each generator header are instantiated in a file of their own
+// (written by cmake/families.cmake; the plug-in's is decomposition_plugin.cpp), which includes only that header, so
+// that a generator header rebuilds only its own families'.
 #include <algorithm>
 #include <bit>
 #include <cmath>

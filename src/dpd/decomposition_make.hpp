@@ -1,6 +1,6 @@
 #pragma once
 // Internal to src/dpd: the decomposed forces of one keyed-hash family, explicitly instantiated per family in the
-// decomposition_<family> files (decomposition_family.hpp has the definition).
+// files cmake/families.cmake writes (decomposition_family.hpp has the definition).
 #include <memory>
 
 #include "dpdrng/dpd/decomposition.hpp"

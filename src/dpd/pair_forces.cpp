@@ -48,22 +48,10 @@ std::unique_ptr<PairForces> make_pair_forces(const WaterConfig& in, const DpdKer
   if (cfg.noise_override != NoiseOverride::off || family == rng::Family::mt19937)
     return gauss ? baseline_or_stream<rng::Distribution::gauss>(cfg, kernel, n)
                  : baseline_or_stream<rng::Distribution::uniform>(cfg, kernel, n);
-  switch (family) {
-    case rng::Family::tea32: return hashed<rng::Family::tea32>(cfg, kernel, n);
-    case rng::Family::tea64: return hashed<rng::Family::tea64>(cfg, kernel, n);
-    case rng::Family::philox4x32: return hashed<rng::Family::philox4x32>(cfg, kernel, n);
-    case rng::Family::threefry2x64: return hashed<rng::Family::threefry2x64>(cfg, kernel, n);
-    case rng::Family::splitmix64: return hashed<rng::Family::splitmix64>(cfg, kernel, n);
-    case rng::Family::saru: return hashed<rng::Family::saru>(cfg, kernel, n);
-    case rng::Family::defect:
-      rng::check_seeding(cfg.generator, cfg.seeding);
-      return hashed<rng::Family::defect>(cfg, kernel, n);
-    case rng::Family::plugin:
-      rng::check_seeding(cfg.generator, cfg.seeding);
-      return hashed<rng::Family::plugin>(cfg, kernel, n);
-    case rng::Family::mt19937: break;
-  }
-  rng::throw_not_keyed_hash(cfg.generator.name);
+  // A defect's or a plug-in's limits under the seeding, refused before the kernel is built.
+  rng::check_seeding(cfg.generator, cfg.seeding);
+  return rng::visit_keyed_family(family, cfg.generator.name,
+                                 [&]<rng::Family F>() { return hashed<F>(cfg, kernel, n); });
 }
 
 }  // namespace dpdrng::dpd

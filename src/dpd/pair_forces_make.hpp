@@ -1,8 +1,9 @@
 #pragma once
 // Internal to src/dpd: the pair forces of a keyed-hash family under one pair seeding, every compiled round
 // count (the distribution is a run-time field of the noise). Each family × seeding is explicitly instantiated in
-// one pair_forces_<family> translation unit (pair_forces_family.hpp has the definition): the instantiations are
-// the engine's largest, so they build in parallel, and a generator header rebuilds only its own family's.
+// one translation unit of its own, written by cmake/families.cmake (pair_forces_family.hpp has the definition): the
+// instantiations are the engine's largest, so they build in parallel, and a generator header rebuilds only its own
+// family's.
 #include <cstddef>
 #include <memory>
 

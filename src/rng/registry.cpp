@@ -5,45 +5,67 @@
 
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/rng/defect.hpp"
+#include "dpdrng/rng/family_headers.hpp"
 
 namespace dpdrng::rng {
 
 namespace {
+// Every listed family satisfies the generator contract (generator.hpp) at each of its compiled round counts and
+// at run-time rounds.
+template <class T, int... R>
+constexpr bool satisfies_contract(Rounds<R...>) {
+  return (KeyedHash<typename T::template Gen<R>> && ... && KeyedHash<typename T::template Gen<0>>);
+}
+#define DPDRNG_CHECK(fam)                                                                          \
+  static_assert(FamilyTraitsOf<FamilyTraits<Family::fam>> &&                                       \
+                satisfies_contract<FamilyTraits<Family::fam>>(                                    \
+                    typename FamilyTraits<Family::fam>::CompiledRounds{}) &&                       \
+                FamilyTraits<Family::fam>::kInfo.family == Family::fam);
+DPDRNG_KEYED_FAMILIES(DPDRNG_CHECK)
+#undef DPDRNG_CHECK
+
+// The listed families in list order, then the reference stream.
+#define DPDRNG_INFO(fam) FamilyTraits<Family::fam>::kInfo,
 constexpr std::array kGenerators{
-    GeneratorInfo{"tea32", Family::tea32, 32, 1, 64,
-                  "Wheeler & Needham (1994) recommend 32 cycles (64 Feistel rounds); the paper asks whether 1 will do",
-                  "32TEA(n): 64-bit seed split into two 32-bit words (low -> x0), n TEA cycles, joined (x1'<<32)|x0'",
-                  true},
-    GeneratorInfo{"tea64", Family::tea64, 32, 1, 64, "no published analysis; the paper's 64-bit variant of TEA's cycle",
-                  "64TEA(n): TEA's cycle on 64-bit words, inputs (x0, x1), outputs a and b", true},
-    GeneratorInfo{"philox4x32", Family::philox4x32, 10, 1, 16,
-                  "Salmon et al. (SC'11): 7 rounds pass BigCrush, 10 (the default) adds a safety margin",
-                  "Philox4x32-R from Random123: 128-bit counter, 64-bit key, 128-bit output", true},
-    GeneratorInfo{"threefry2x64", Family::threefry2x64, 20, 1, 32,
-                  "Salmon et al. (SC'11): 13 rounds pass BigCrush, 20 (the default) adds a safety margin",
-                  "Threefry2x64-R from Random123: 128-bit counter, 128-bit key, 128-bit output", true},
-    GeneratorInfo{"splitmix64", Family::splitmix64, 1, 1, 1, "fixed finaliser, no round parameter; passes BigCrush (Steele et al. 2014)",
-                  "SplitMix64: Weyl sequence (gamma 0x9e3779b97f4a7c15) through Stafford's mix13 finaliser", true},
-    GeneratorInfo{"saru", Family::saru, 1, 1, 1,
-                  "fixed, no round parameter; its author reports the stream passes BigCrush (Afshar et al. 2013)",
-                  "Saru (Worley 2008), HOOMD-blue v2's DPD noise: 1-3 seed words hashed to (LCG, Weyl) state, "
-                  "2 outputs per word",
-                  true},
-    GeneratorInfo{"defect", Family::defect, 1, 1, 1, "a test article with a known defect, not for production",
-                  "Philox4x32-10 with an injected defect at the level of zeta (variance, lag-1 correlation or "
-                  "mean shift); its words are Philox's. Name: defect:variance=E,lag1=R,mean=M,base=philox4x32",
-                  true},
-    GeneratorInfo{"mt19937", Family::mt19937, 1, 1, 1, "the reference; no round parameter",
-                  "MT19937 (32-bit, std::mt19937 = gsl_rng_mt19937); two draws make a 64-bit word, high first",
-                  false},
-};
+    DPDRNG_KEYED_FAMILIES(DPDRNG_INFO) GeneratorInfo{
+        .name = "mt19937",
+        .family = Family::mt19937,
+        .safe_rounds = "the reference; no round parameter",
+        .description = "MT19937 (32-bit, std::mt19937 = gsl_rng_mt19937); two draws make a 64-bit word, high first",
+        .keyed_hash = false,
+        .takes_key = false,
+        .counter_stream = false}};
+#undef DPDRNG_INFO
+
+template <int... R>
+constexpr std::array<int, sizeof...(R)> as_array(Rounds<R...>) {
+  return {R...};
+}
+template <Family F>
+constexpr auto kCompiledRounds = as_array(typename FamilyTraits<F>::CompiledRounds{});
 }  // namespace
+
+std::span<const int> compiled_round_list(Family f) {
+  switch (f) {
+#define DPDRNG_ROUNDS(fam) \
+  case Family::fam: return kCompiledRounds<Family::fam>;
+    DPDRNG_KEYED_FAMILIES(DPDRNG_ROUNDS)
+#undef DPDRNG_ROUNDS
+    case Family::plugin:
+    case Family::mt19937: break;
+  }
+  return {};
+}
 
 std::span<const GeneratorInfo> generator_table() { return kGenerators; }
 
 namespace {
-constexpr GeneratorInfo kPlugin{"ext", Family::plugin, 1, 1, 1, "a user's plug-in: no published analysis",
-                                "a keyed hash loaded from a shared library (dpdrng/plugin.h); name: ext:PATH", true};
+constexpr GeneratorInfo kPlugin{
+    .name = "ext",
+    .family = Family::plugin,
+    .safe_rounds = "a user's plug-in: no published analysis",
+    .description = "a keyed hash loaded from a shared library (dpdrng/plugin.h); name: ext:PATH",
+    .takes_key = false};
 }  // namespace
 
 const GeneratorInfo& find_generator(std::string_view name) {

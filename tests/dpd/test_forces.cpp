@@ -7,6 +7,7 @@
 #include "dpdrng/dpd/pair_loop.hpp"
 #include "dpdrng/dpd/water.hpp"
 #include "dpdrng/rng/dispatch.hpp"
+#include "../rng/every_generator.hpp"
 #include "scale.hpp"
 
 namespace dpdrng_test::dpd_test_forces {
@@ -127,17 +128,17 @@ TEST(PairLoop, CoincidentBeadsGiveNoForceAndNoNaN) {
 }
 
 TEST(PairNoise, SymmetricForEverySeedingAndGenerator) {
-  for (const char* name : {"tea32", "tea64", "philox4x32", "threefry2x64", "splitmix64"})
+  for (const rng::GeneratorSpec& spec : every_generator(false))
     for (rng::Seeding seeding : {rng::Seeding::distance, rng::Seeding::pair_step})
       for (rng::Distribution dist : {rng::Distribution::gauss, rng::Distribution::uniform})
-        rng::with_pair_noise(rng::validated({name, 0}), seeding, dist, 77, [&](auto pn) {
+        rng::with_pair_noise(spec, seeding, dist, 77, [&](auto pn) {
           for (int k = 0; k < 50; ++k) {
             const double dx = 0.013 * k - 0.31, dy = 0.7 - 0.011 * k, dz = 0.002 * k;
             const rng::PairInput ij{3, 9, dx, dy, dz, std::uint64_t(100 + k)};
             const rng::PairInput ji{9, 3, -dx, -dy, -dz, std::uint64_t(100 + k)};
             const double a = pn(ij), b = pn(rng::canonical(ji));
             EXPECT_EQ(std::bit_cast<std::uint64_t>(a), std::bit_cast<std::uint64_t>(b))
-                << name << " " << rng::to_string(seeding) << " k=" << k;
+                << rng::describe(spec) << " " << rng::to_string(seeding) << " k=" << k;
           }
           return 0;
         });

@@ -10,6 +10,7 @@
 #include "dpdrng/rng/dispatch.hpp"
 #include "dpdrng/rng/registry.hpp"
 #include "dpdrng/rng/stream.hpp"
+#include "every_generator.hpp"
 
 namespace dpdrng_test::rng_test_distribution {
 
@@ -62,17 +63,8 @@ Moments moments(const std::vector<double>& x) {
   return m;
 }
 
-std::vector<GeneratorSpec> strong_generators() {
-  std::vector<GeneratorSpec> out;
-  for (auto [name, rounds] : {std::pair{"tea32", 32}, {"tea64", 32}, {"philox4x32", 10}, {"threefry2x64", 20},
-                              {"splitmix64", 1}, {"saru", 1}, {"mt19937", 1}}) {
-    GeneratorSpec s;
-    s.name = name;
-    s.rounds = rounds;
-    out.push_back(validated(s));
-  }
-  return out;
-}
+// Every generator at its default rounds, the reference stream included.
+std::vector<GeneratorSpec> strong_generators() { return dpdrng_test::every_generator(false, true); }
 
 // Gaussian: E z = 0, E z² = 1, E z⁴ = 3, P(|z| > 3) = erfc(3/√2) = 0.0026998.
 // Standard errors with N = 2^20: mean 1/√N; E z²: √(E z⁴ − 1)/√N = √2/√N; E z⁴: √(E z⁸ − 9)/√N = √96/√N
@@ -143,16 +135,7 @@ TEST(Seeding, SymmetricForEveryGeneratorAndSeeding) {
                              {40000, 2, -0.731, 0.002, 0.9, 123456789},
                              {7, 8, 1e-12, -3e-7, 0.0, 0},
                              {1u << 31, 5, -0.0, 0.5, -0.5, ~std::uint64_t{0}}};
-  std::vector<GeneratorSpec> specs;
-  for (auto [name, rounds] : {std::pair{"tea32", 1}, {"tea32", 32}, {"tea64", 1}, {"tea64", 8},
-                              {"philox4x32", 10}, {"threefry2x64", 20}, {"splitmix64", 1}, {"saru", 1},
-                              {"tea32", 7}}) {
-    GeneratorSpec s;
-    s.name = name;
-    s.rounds = rounds;
-    specs.push_back(validated(s));
-  }
-  for (const auto& s : specs)
+  for (const auto& s : dpdrng_test::every_generator(true))
     for (auto seeding : {Seeding::distance, Seeding::pair_step})
       for (auto dist : {Distribution::gauss, Distribution::uniform})
         with_pair_noise(s, seeding, dist, 0x5eed, [&](const auto& noise) {

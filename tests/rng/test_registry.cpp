@@ -45,4 +45,19 @@ TEST(Registry, CompiledCountsDispatchToFixedRoundTypes) {
   EXPECT_EQ(runtime, 7);
 }
 
+// The one family list drives the table and the dispatch alike: each keyed generator's name reaches the type of
+// that name, and the key check and the stream kind come from the same entry.
+TEST(Registry, EveryKeyedGeneratorDispatchesToItsOwnType) {
+  for (const GeneratorInfo& g : generator_table()) {
+    if (!g.keyed_hash) continue;
+    const std::string_view kind = with_hash(validated({std::string(g.name), g.default_rounds}), [](const auto& gen) {
+      return std::string_view(std::decay_t<decltype(gen)>::kName);
+    });
+    EXPECT_EQ(kind, g.name);
+  }
+  EXPECT_FALSE(find_generator("mt19937").keyed_hash);
+  EXPECT_TRUE(find_generator("tea32").takes_key);
+  EXPECT_FALSE(find_generator("splitmix64").counter_stream);
+}
+
 }  // namespace dpdrng_test::rng_test_registry

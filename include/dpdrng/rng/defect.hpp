@@ -100,6 +100,20 @@ struct Defect {
   }
 };
 
+// The registry's "defect" entry; a run names its parameters (defect:...), which the registry parses.
+template <>
+struct FamilyTraits<Family::defect> {
+  template <int>
+  using Gen = Defect;
+  using CompiledRounds = Rounds<>;
+  static constexpr GeneratorInfo kInfo{
+      .name = "defect",
+      .family = Family::defect,
+      .safe_rounds = "a test article with a known defect, not for production",
+      .description = "Philox4x32-10 with an injected defect at the level of zeta (variance, lag-1 correlation or "
+                     "mean shift); its words are Philox's. Name: defect:variance=E,lag1=R,mean=M,base=philox4x32"};
+};
+
 template <Distribution D>
 inline double draw(const DefectBlock& b) {
   double eta = draw<D>(b.now);

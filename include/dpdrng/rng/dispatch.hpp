@@ -4,13 +4,9 @@
 #include <cstdint>
 #include <utility>
 
-#include "dpdrng/rng/defect.hpp"
-#include "dpdrng/rng/random123.hpp"
+#include "dpdrng/rng/family_headers.hpp"
 #include "dpdrng/rng/registry.hpp"
-#include "dpdrng/rng/saru.hpp"
 #include "dpdrng/rng/seeding.hpp"
-#include "dpdrng/rng/splitmix.hpp"
-#include "dpdrng/rng/tea.hpp"
 
 namespace dpdrng::rng {
 
@@ -18,18 +14,9 @@ namespace dpdrng::rng {
 // InputError.
 template <class F>
 decltype(auto) with_hash(const GeneratorSpec& s, F&& f) {
-  switch (family_of(s.name)) {
-    case Family::tea32: return with_family_hash<Family::tea32>(s, std::forward<F>(f));
-    case Family::tea64: return with_family_hash<Family::tea64>(s, std::forward<F>(f));
-    case Family::philox4x32: return with_family_hash<Family::philox4x32>(s, std::forward<F>(f));
-    case Family::threefry2x64: return with_family_hash<Family::threefry2x64>(s, std::forward<F>(f));
-    case Family::splitmix64: return with_family_hash<Family::splitmix64>(s, std::forward<F>(f));
-    case Family::saru: return with_family_hash<Family::saru>(s, std::forward<F>(f));
-    case Family::defect: return with_family_hash<Family::defect>(s, std::forward<F>(f));
-    case Family::plugin: return with_family_hash<Family::plugin>(s, std::forward<F>(f));
-    case Family::mt19937: break;
-  }
-  throw_not_keyed_hash(s.name);
+  return visit_keyed_family(family_of(s.name), s.name, [&]<Family Fam>() -> decltype(auto) {
+    return with_family_hash<Fam>(s, std::forward<F>(f));
+  });
 }
 
 // Calls f(PairNoise<G, S, D>) for a keyed hash, a pair seeding and a distribution chosen at run time; the feed

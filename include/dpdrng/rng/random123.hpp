@@ -8,6 +8,7 @@
 #include <bit>
 #include <cstdint>
 
+#include "dpdrng/rng/generator.hpp"
 #include "dpdrng/rng/key.hpp"
 #include "dpdrng/rng/words.hpp"
 
@@ -69,6 +70,36 @@ struct Threefry2x64 {
   Block pair_step(std::uint32_t i, std::uint32_t j, std::uint64_t step, std::uint64_t seed) const {
     return hash(join32(j, i), step, k0() ^ seed, k1());
   }
+};
+
+template <>
+struct FamilyTraits<Family::philox4x32> {
+  template <int R>
+  using Gen = Philox4x32<R>;
+  using CompiledRounds = Rounds<7, 10>;
+  static constexpr GeneratorInfo kInfo{
+      .name = "philox4x32",
+      .family = Family::philox4x32,
+      .default_rounds = 10,
+      .min_rounds = 1,
+      .max_rounds = 16,
+      .safe_rounds = "Salmon et al. (SC'11): 7 rounds pass BigCrush, 10 (the default) adds a safety margin",
+      .description = "Philox4x32-R from Random123: 128-bit counter, 64-bit key, 128-bit output"};
+};
+
+template <>
+struct FamilyTraits<Family::threefry2x64> {
+  template <int R>
+  using Gen = Threefry2x64<R>;
+  using CompiledRounds = Rounds<13, 20>;
+  static constexpr GeneratorInfo kInfo{
+      .name = "threefry2x64",
+      .family = Family::threefry2x64,
+      .default_rounds = 20,
+      .min_rounds = 1,
+      .max_rounds = 32,
+      .safe_rounds = "Salmon et al. (SC'11): 13 rounds pass BigCrush, 20 (the default) adds a safety margin",
+      .description = "Threefry2x64-R from Random123: 128-bit counter, 128-bit key, 128-bit output"};
 };
 
 }  // namespace dpdrng::rng

@@ -12,6 +12,7 @@
 #include <bit>
 #include <cstdint>
 
+#include "dpdrng/rng/generator.hpp"
 #include "dpdrng/rng/key.hpp"
 #include "dpdrng/rng/words.hpp"
 
@@ -102,6 +103,20 @@ struct Saru {
     const std::uint32_t lo = i < j ? i : j, hi = i < j ? j : i;
     return {saru_detail::two_outputs(saru_detail::seed3(lo, hi, lo32(seed + step)))};
   }
+};
+
+template <>
+struct FamilyTraits<Family::saru> {
+  template <int>
+  using Gen = Saru;
+  using CompiledRounds = Rounds<>;
+  static constexpr GeneratorInfo kInfo{
+      .name = "saru",
+      .family = Family::saru,
+      .safe_rounds = "fixed, no round parameter; its author reports the stream passes BigCrush (Afshar et al. 2013)",
+      .description = "Saru (Worley 2008), HOOMD-blue v2's DPD noise: 1-3 seed words hashed to (LCG, Weyl) state, "
+                     "2 outputs per word",
+      .takes_key = false};
 };
 
 }  // namespace dpdrng::rng

@@ -5,6 +5,7 @@
 #include <bit>
 #include <cstdint>
 
+#include "dpdrng/rng/generator.hpp"
 #include "dpdrng/rng/key.hpp"
 #include "dpdrng/rng/words.hpp"
 
@@ -38,6 +39,20 @@ struct SplitMix64 {
     const std::uint64_t h = splitmix64_mix(join32(j, i) + (seed + 1) * kGoldenGamma);
     return {splitmix64_mix(h ^ (step * kGoldenGamma))};
   }
+};
+
+template <>
+struct FamilyTraits<Family::splitmix64> {
+  template <int>
+  using Gen = SplitMix64;
+  using CompiledRounds = Rounds<>;
+  static constexpr GeneratorInfo kInfo{
+      .name = "splitmix64",
+      .family = Family::splitmix64,
+      .safe_rounds = "fixed finaliser, no round parameter; passes BigCrush (Steele et al. 2014)",
+      .description = "SplitMix64: Weyl sequence (gamma 0x9e3779b97f4a7c15) through Stafford's mix13 finaliser",
+      .takes_key = false,
+      .counter_stream = false};
 };
 
 }  // namespace dpdrng::rng

@@ -4,6 +4,7 @@
 #include <bit>
 #include <cstdint>
 
+#include "dpdrng/rng/generator.hpp"
 #include "dpdrng/rng/key.hpp"
 #include "dpdrng/rng/words.hpp"
 
@@ -97,6 +98,41 @@ struct Tea64 {
     k[2] ^= seed;
     return hash(join32(j, i), step, k);
   }
+};
+
+// The studies' round counts, compiled as constants for both TEA families.
+using TeaCompiledRounds = Rounds<1, 2, 3, 4, 5, 6, 8, 16, 32>;
+
+template <>
+struct FamilyTraits<Family::tea32> {
+  template <int R>
+  using Gen = Tea32<R>;
+  using CompiledRounds = TeaCompiledRounds;
+  static constexpr GeneratorInfo kInfo{
+      .name = "tea32",
+      .family = Family::tea32,
+      .default_rounds = 32,
+      .min_rounds = 1,
+      .max_rounds = 64,
+      .safe_rounds =
+          "Wheeler & Needham (1994) recommend 32 cycles (64 Feistel rounds); the paper asks whether 1 will do",
+      .description =
+          "32TEA(n): 64-bit seed split into two 32-bit words (low -> x0), n TEA cycles, joined (x1'<<32)|x0'"};
+};
+
+template <>
+struct FamilyTraits<Family::tea64> {
+  template <int R>
+  using Gen = Tea64<R>;
+  using CompiledRounds = TeaCompiledRounds;
+  static constexpr GeneratorInfo kInfo{
+      .name = "tea64",
+      .family = Family::tea64,
+      .default_rounds = 32,
+      .min_rounds = 1,
+      .max_rounds = 64,
+      .safe_rounds = "no published analysis; the paper's 64-bit variant of TEA's cycle",
+      .description = "64TEA(n): TEA's cycle on 64-bit words, inputs (x0, x1), outputs a and b"};
 };
 
 }  // namespace dpdrng::rng
