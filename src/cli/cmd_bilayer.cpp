@@ -9,13 +9,12 @@
 
 #include "bilayer_cli.hpp"
 #include "csv_out.hpp"
+#include "run_json.hpp"
 #include "dpdrng/cli/options.hpp"
 #include "dpdrng/cli/checked.hpp"
 #include "dpdrng/cli/registry.hpp"
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/common/output.hpp"
-#include "dpdrng/rng/registry.hpp"
-#include "dpdrng/version.hpp"
 
 namespace dpdrng::cli {
 namespace cmd_bilayer {
@@ -99,23 +98,13 @@ const bool registered = register_command(41, [](CLI::App& root) {
 
 namespace cmd_bilayer {
 namespace {
-// The document's identity for readers that outlive this version, and every setting that changes its numbers.
-nlohmann::json stamped(nlohmann::json j, const dpd::BilayerConfig& c) {
-  j["dpdrng_version"] = dpdrng::kVersion;
-  j["schema"] = "dpdrng.simulate.bilayer/1";
-  j["inputs"] = {{"box", c.box},           {"lipids_per_leaflet", c.lipids_per_leaflet},
-                 {"particles", c.particles}, {"a", c.a},
-                 {"rc", c.rc},             {"kT", c.kT},
-                 {"gamma", c.gamma},       {"lambda", c.lambda},
-                 {"dt_warmup", c.dt_warmup}, {"dt", c.dt},
-                 {"warmup", c.warmup},     {"steps", c.steps},
-                 {"equilibrate", c.equilibrate}, {"pairs", dpd::to_string(c.pairs)},
-                 {"generator", c.generator.name}, {"rounds", c.generator.rounds},
-                 {"key", c.generator.key}, {"seeding", rng::to_string(c.seeding)},
-                 {"distribution", rng::to_string(c.distribution)}, {"feed", rng::to_string(c.feed)},
-                 {"seed", c.seed},         {"init_seed", c.init_seed},
-                 {"sample_every", c.sample_every}, {"threads", c.threads}};
-  return j;
+// The document's version, schema and inputs: the membrane scene's physics beside the noise settings.
+nlohmann::json stamped(const nlohmann::json& j, const dpd::BilayerConfig& c) {
+  return cli::stamped(j, "dpdrng.simulate.bilayer/1", c,
+                      {{"box", c.box}, {"lipids_per_leaflet", c.lipids_per_leaflet}, {"particles", c.particles},
+                       {"a", c.a}, {"rc", c.rc}, {"kT", c.kT}, {"gamma", c.gamma}, {"lambda", c.lambda},
+                       {"dt_warmup", c.dt_warmup}, {"dt", c.dt}, {"warmup", c.warmup}, {"steps", c.steps},
+                       {"equilibrate", c.equilibrate}});
 }
 }  // namespace
 }  // namespace cmd_bilayer

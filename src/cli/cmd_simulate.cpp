@@ -16,9 +16,9 @@
 #include "dpdrng/dpd/water.hpp"
 #include "dpdrng/rng/registry.hpp"
 #include "dpdrng/stats/moments.hpp"
-#include "dpdrng/version.hpp"
 #include "bilayer_cli.hpp"
 #include "csv_out.hpp"
+#include "run_json.hpp"
 #include "simulate_physics.hpp"
 #include "simulate_taps.hpp"
 
@@ -147,27 +147,12 @@ nlohmann::json simulate_json(const dpd::RunResult& r) {
   return j;
 }
 
-// What a reader needs to redo the run: every setting that changes its numbers.
-nlohmann::json inputs_json(const dpd::WaterConfig& c) {
-  return {{"particles", c.particles},       {"density", c.density},
-          {"a", c.a},                       {"rc", c.rc},
-          {"kT", c.kT},                     {"gamma", c.gamma},
-          {"lambda", c.lambda},             {"dt", c.dt},
-          {"integrator", c.integrator_name()}, {"steps", c.steps},
-          {"equilibrate", c.equilibrate},   {"pairs", dpd::to_string(c.pairs)},
-          {"generator", c.generator.name},  {"rounds", c.generator.rounds},
-          {"key", c.generator.key},         {"seeding", rng::to_string(c.seeding)},
-          {"distribution", rng::to_string(c.distribution)}, {"feed", rng::to_string(c.feed)},
-          {"seed", c.seed},                 {"init_seed", c.init_seed},
-          {"sample_every", c.sample_every}, {"threads", c.threads}};
-}
-
-// The document's identity for readers that outlive this version: the tool's version, the schema and the inputs.
-nlohmann::json stamped(nlohmann::json j, const dpd::WaterConfig& c) {
-  j["dpdrng_version"] = dpdrng::kVersion;
-  j["schema"] = "dpdrng.simulate.water/1";
-  j["inputs"] = inputs_json(c);
-  return j;
+// The document's version, schema and inputs: the water scene's physics beside the noise settings.
+nlohmann::json stamped(const nlohmann::json& j, const dpd::WaterConfig& c) {
+  return cli::stamped(j, "dpdrng.simulate.water/1", c,
+                      {{"particles", c.particles}, {"density", c.density}, {"a", c.a}, {"rc", c.rc}, {"kT", c.kT},
+                       {"gamma", c.gamma}, {"lambda", c.lambda}, {"dt", c.dt}, {"integrator", c.integrator_name()},
+                       {"steps", c.steps}, {"equilibrate", c.equilibrate}});
 }
 
 // The run's config with the reference generator: the same feed, seeding, integrator, Δt and initial state.
