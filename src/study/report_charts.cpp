@@ -70,7 +70,8 @@ const std::vector<std::string> kShiftColumns{"x", "shift_pct", "ci_low_pct", "ci
 
 // Scales a shift axis to the effects a reader must judge: up to the furthest CI end among the shifts within 10 %
 // (at least twice the margin). A shift beyond that (64TEA(1) at +2000 %) is drawn at the edge as a triangle
-// pointing off the chart, named with its value. Rows: x, shift, CI low, CI high, …; labels: the variants.
+// pointing off the chart, named with its value one line further inward each, below the row of triangles so that
+// no name runs into a neighbour's triangle. Rows: x, shift, CI low, CI high, …; labels: the variants.
 void fit_shift_axis(Chart& c, double margin, std::vector<Line*> data) {
   constexpr double kEffect = 10;
   double limit = std::isfinite(margin) ? 2 * margin : 1;
@@ -81,13 +82,13 @@ void fit_shift_axis(Chart& c, double margin, std::vector<Line*> data) {
                           std::isfinite(r[3]) ? std::abs(r[3]) : 0.0});
   limit *= 1.15;
   std::map<std::size_t, std::pair<Line, Line>> beyond;  // per panel: the triangles and their names
-  std::map<std::size_t, std::size_t> named;             // the names stack inward from the edge, one line each
+  std::map<std::size_t, std::size_t> named;             // per panel: the names placed so far
   for (Line* l : data)
     for (std::size_t k = 0; k < l->rows.size(); ++k) {
       auto& r = l->rows[k];
       if (std::abs(r[1]) <= limit) continue;
       const double edge = std::copysign(0.94 * limit, r[1]);
-      const double at = edge - std::copysign(0.08 * limit * double(named[l->panel]++), r[1]);
+      const double at = edge - std::copysign(0.09 * limit * double(++named[l->panel]), r[1]);
       const std::string who = k < l->labels.size() ? l->labels[k] + " " : "";
       auto& [off, names] = beyond[l->panel];
       off = Line{"", "using 2:3:(column(7) > 0 ? 9 : 11) with points pt variable ps 1.6 lc rgb '#333333'",
