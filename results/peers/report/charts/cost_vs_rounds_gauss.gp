@@ -13,24 +13,26 @@ set grid
 set datafile separator comma
 set datafile missing "nan"
 unset key
-set arrow from graph 0, first 6.09601 to graph 1, first 6.09601 nohead dt 2 lw 2 lc rgb 'black'
-set label "mt19937" at graph 0.01, first 6.09601 offset 0,0.6 font ',10' tc rgb 'black'
+set arrow from graph 0, first 3.44482 to graph 1, first 3.44482 nohead dt 2 lw 2 lc rgb 'black'
+set label "mt19937" at graph 0.01, first 3.44482 offset 0,0.6 font ',10' tc rgb 'black'
 set multiplot layout 1,2 title "Cost of one random number inside the DPD run (gauss)" noenhanced
 set title "distance seeding" noenhanced
 unset colorbox
 plot "cost_vs_rounds_gauss.csv" index 0 using 2:3 with linespoints lw 2 pt 7 lc rgb '#009E73' title "philox4x32", \
      "cost_vs_rounds_gauss.csv" index 2 using 2:3 with linespoints lw 2 pt 7 lc rgb '#D55E00' title "saru", \
      "cost_vs_rounds_gauss.csv" index 4 using 2:3 with linespoints lw 2 pt 7 lc rgb '#56B4E9' title "splitmix64", \
-     "cost_vs_rounds_gauss.csv" index 6 using 2:3 with linespoints lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
-     "cost_vs_rounds_gauss.csv" index 8 using 2:3 with linespoints lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
-     "cost_vs_rounds_gauss.csv" index 10 using 2:3 with linespoints lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64"
+     "cost_vs_rounds_gauss.csv" index 6 using 2:3 with linespoints lw 2 pt 7 lc rgb '#999933' title "squares64", \
+     "cost_vs_rounds_gauss.csv" index 8 using 2:3 with linespoints lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
+     "cost_vs_rounds_gauss.csv" index 10 using 2:3 with linespoints lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
+     "cost_vs_rounds_gauss.csv" index 12 using 2:3 with linespoints lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64"
 set title "pair-step seeding" noenhanced
 set key inside bottom right noenhanced opaque box samplen 2 spacing 1.1 font ',10'
 set colorbox
 plot "cost_vs_rounds_gauss.csv" index 1 using 2:3 with linespoints lw 2 pt 7 lc rgb '#009E73' title "philox4x32", \
      "cost_vs_rounds_gauss.csv" index 3 using 2:3 with linespoints lw 2 pt 7 lc rgb '#D55E00' title "saru", \
      "cost_vs_rounds_gauss.csv" index 5 using 2:3 with linespoints lw 2 pt 7 lc rgb '#56B4E9' title "splitmix64", \
-     "cost_vs_rounds_gauss.csv" index 7 using 2:3 with linespoints lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
-     "cost_vs_rounds_gauss.csv" index 9 using 2:3 with linespoints lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
-     "cost_vs_rounds_gauss.csv" index 11 using 2:3 with linespoints lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64"
+     "cost_vs_rounds_gauss.csv" index 7 using 2:3 with linespoints lw 2 pt 7 lc rgb '#999933' title "squares64", \
+     "cost_vs_rounds_gauss.csv" index 9 using 2:3 with linespoints lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
+     "cost_vs_rounds_gauss.csv" index 11 using 2:3 with linespoints lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
+     "cost_vs_rounds_gauss.csv" index 13 using 2:3 with linespoints lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64"
 unset multiplot

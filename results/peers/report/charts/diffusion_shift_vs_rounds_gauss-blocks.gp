@@ -20,16 +20,18 @@ unset colorbox
 plot "diffusion_shift_vs_rounds_gauss-blocks.csv" index 0 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#009E73' title "philox4x32", \
      "diffusion_shift_vs_rounds_gauss-blocks.csv" index 2 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#D55E00' title "saru", \
      "diffusion_shift_vs_rounds_gauss-blocks.csv" index 4 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#56B4E9' title "splitmix64", \
-     "diffusion_shift_vs_rounds_gauss-blocks.csv" index 6 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
-     "diffusion_shift_vs_rounds_gauss-blocks.csv" index 8 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
-     "diffusion_shift_vs_rounds_gauss-blocks.csv" index 10 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64"
+     "diffusion_shift_vs_rounds_gauss-blocks.csv" index 6 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#999933' title "squares64", \
+     "diffusion_shift_vs_rounds_gauss-blocks.csv" index 8 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
+     "diffusion_shift_vs_rounds_gauss-blocks.csv" index 10 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
+     "diffusion_shift_vs_rounds_gauss-blocks.csv" index 12 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64"
 set title "pair-step seeding" noenhanced
 set key inside top right noenhanced opaque box samplen 2 spacing 1.1 font ',10'
 set colorbox
 plot "diffusion_shift_vs_rounds_gauss-blocks.csv" index 1 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#009E73' title "philox4x32", \
      "diffusion_shift_vs_rounds_gauss-blocks.csv" index 3 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#D55E00' title "saru", \
      "diffusion_shift_vs_rounds_gauss-blocks.csv" index 5 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#56B4E9' title "splitmix64", \
-     "diffusion_shift_vs_rounds_gauss-blocks.csv" index 7 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
-     "diffusion_shift_vs_rounds_gauss-blocks.csv" index 9 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
-     "diffusion_shift_vs_rounds_gauss-blocks.csv" index 11 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64"
+     "diffusion_shift_vs_rounds_gauss-blocks.csv" index 7 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#999933' title "squares64", \
+     "diffusion_shift_vs_rounds_gauss-blocks.csv" index 9 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
+     "diffusion_shift_vs_rounds_gauss-blocks.csv" index 11 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
+     "diffusion_shift_vs_rounds_gauss-blocks.csv" index 13 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64"
 unset multiplot

@@ -19,13 +19,15 @@ plot "predicted_vs_measured.csv" index 0 using 2:3:4:5:6:7 with xyerrorbars pt 7
      "predicted_vs_measured.csv" index 1 using 2:3:8 with points pt variable ps 1.3 lc rgb '#D55E00' notitle, \
      "predicted_vs_measured.csv" index 2 using 2:3:4:5:6:7 with xyerrorbars pt 7 ps 0.6 lc rgb '#56B4E9' title "splitmix64", \
      "predicted_vs_measured.csv" index 2 using 2:3:8 with points pt variable ps 1.3 lc rgb '#56B4E9' notitle, \
-     "predicted_vs_measured.csv" index 3 using 2:3:4:5:6:7 with xyerrorbars pt 7 ps 0.6 lc rgb '#0072B2' title "tea32", \
-     "predicted_vs_measured.csv" index 3 using 2:3:8 with points pt variable ps 1.3 lc rgb '#0072B2' notitle, \
-     "predicted_vs_measured.csv" index 4 using 2:3:4:5:6:7 with xyerrorbars pt 7 ps 0.6 lc rgb '#E69F00' title "tea64", \
-     "predicted_vs_measured.csv" index 4 using 2:3:8 with points pt variable ps 1.3 lc rgb '#E69F00' notitle, \
-     "predicted_vs_measured.csv" index 5 using 2:3:4:5:6:7 with xyerrorbars pt 7 ps 0.6 lc rgb '#CC79A7' title "threefry2x64", \
-     "predicted_vs_measured.csv" index 5 using 2:3:8 with points pt variable ps 1.3 lc rgb '#CC79A7' notitle, \
-     "predicted_vs_measured.csv" index 6 using 2:3:9 with labels offset 1,-0.6 left font ',10' tc rgb '#333333' title "", \
+     "predicted_vs_measured.csv" index 3 using 2:3:4:5:6:7 with xyerrorbars pt 7 ps 0.6 lc rgb '#999933' title "squares64", \
+     "predicted_vs_measured.csv" index 3 using 2:3:8 with points pt variable ps 1.3 lc rgb '#999933' notitle, \
+     "predicted_vs_measured.csv" index 4 using 2:3:4:5:6:7 with xyerrorbars pt 7 ps 0.6 lc rgb '#0072B2' title "tea32", \
+     "predicted_vs_measured.csv" index 4 using 2:3:8 with points pt variable ps 1.3 lc rgb '#0072B2' notitle, \
+     "predicted_vs_measured.csv" index 5 using 2:3:4:5:6:7 with xyerrorbars pt 7 ps 0.6 lc rgb '#E69F00' title "tea64", \
+     "predicted_vs_measured.csv" index 5 using 2:3:8 with points pt variable ps 1.3 lc rgb '#E69F00' notitle, \
+     "predicted_vs_measured.csv" index 6 using 2:3:4:5:6:7 with xyerrorbars pt 7 ps 0.6 lc rgb '#CC79A7' title "threefry2x64", \
+     "predicted_vs_measured.csv" index 6 using 2:3:8 with points pt variable ps 1.3 lc rgb '#CC79A7' notitle, \
+     "predicted_vs_measured.csv" index 7 using 2:3:9 with labels offset 1,-0.6 left font ',10' tc rgb '#333333' title "", \
      keyentry with points pt 7 lc rgb 'black' title "1 round", \
      keyentry with points pt 10 lc rgb 'black' title "7 rounds", \
      keyentry with points pt 6 lc rgb 'black' title "8 rounds", \

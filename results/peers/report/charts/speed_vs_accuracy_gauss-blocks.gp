@@ -14,35 +14,37 @@ unset key
 set object 1 rectangle from graph 0, first -0.5 to graph 1, first 0.5 behind fillcolor rgb '#DDEEDD' fillstyle solid 1.0 noborder
 set label 1 "equivalence margin ±0.5" at graph 0.01, first 0.5 offset 0,-0.8 font ',10' tc rgb '#336633' front
 set arrow 1 from graph 0, first 0 to graph 1, first 0 nohead lw 1 lc rgb 'black'
-set arrow from first 10.3193, graph 0 to first 10.3193, graph 1 nohead dt 2 lc rgb 'black'
-set label "mt19937" at first 10.3193, graph 0.96 offset 0.5,0 font ',10'
+set arrow from first 6.33624, graph 0 to first 6.33624, graph 1 nohead dt 2 lc rgb 'black'
+set label "mt19937" at first 6.33624, graph 0.96 offset 0.5,0 font ',10'
 set yrange [-2.82356:2.82356]
-set xrange [0.321796:13.4151]
+set xrange [0.281278:8.23712]
 set multiplot layout 1,2 title "Cost (best of 5 × 4096 calls in the run) against temperature shift (gauss-blocks; Intel(R) Xeon(R) Processor (family 6, model 207))" noenhanced
 set title "distance seeding" noenhanced
 unset colorbox
 plot "speed_vs_accuracy_gauss-blocks.csv" index 0 using 2:3:4:5:6 with yerrorbars pt variable ps 1.3 lw 1.5 lc rgb '#009E73' title "philox4x32", \
      "speed_vs_accuracy_gauss-blocks.csv" index 2 using 2:3:4:5:6 with yerrorbars pt variable ps 1.3 lw 1.5 lc rgb '#D55E00' title "saru", \
      "speed_vs_accuracy_gauss-blocks.csv" index 4 using 2:3:4:5:6 with yerrorbars pt variable ps 1.3 lw 1.5 lc rgb '#56B4E9' title "splitmix64", \
-     "speed_vs_accuracy_gauss-blocks.csv" index 6 using 2:3:4:5:6 with yerrorbars pt variable ps 1.3 lw 1.5 lc rgb '#0072B2' title "tea32", \
-     "speed_vs_accuracy_gauss-blocks.csv" index 8 using 2:3:4:5:6 with yerrorbars pt variable ps 1.3 lw 1.5 lc rgb '#E69F00' title "tea64", \
-     "speed_vs_accuracy_gauss-blocks.csv" index 10 using 2:3:4:5:6 with yerrorbars pt variable ps 1.3 lw 1.5 lc rgb '#CC79A7' title "threefry2x64", \
-     "speed_vs_accuracy_gauss-blocks.csv" index 12 using 2:3:(column(7) > 0 ? 9 : 11) with points pt variable ps 1.6 lc rgb '#333333' title "", \
-     "speed_vs_accuracy_gauss-blocks.csv" index 13 using 2:3:8 with labels offset 1,0 left font ',10' tc rgb '#333333' title "", \
-     "speed_vs_accuracy_gauss-blocks.csv" index 16 using 2:3 with steps dt 2 lw 1 lc rgb '#555555' title ""
+     "speed_vs_accuracy_gauss-blocks.csv" index 6 using 2:3:4:5:6 with yerrorbars pt variable ps 1.3 lw 1.5 lc rgb '#999933' title "squares64", \
+     "speed_vs_accuracy_gauss-blocks.csv" index 8 using 2:3:4:5:6 with yerrorbars pt variable ps 1.3 lw 1.5 lc rgb '#0072B2' title "tea32", \
+     "speed_vs_accuracy_gauss-blocks.csv" index 10 using 2:3:4:5:6 with yerrorbars pt variable ps 1.3 lw 1.5 lc rgb '#E69F00' title "tea64", \
+     "speed_vs_accuracy_gauss-blocks.csv" index 12 using 2:3:4:5:6 with yerrorbars pt variable ps 1.3 lw 1.5 lc rgb '#CC79A7' title "threefry2x64", \
+     "speed_vs_accuracy_gauss-blocks.csv" index 14 using 2:3:(column(7) > 0 ? 9 : 11) with points pt variable ps 1.6 lc rgb '#333333' title "", \
+     "speed_vs_accuracy_gauss-blocks.csv" index 15 using 2:3:8 with labels offset 1,0 left font ',10' tc rgb '#333333' title "", \
+     "speed_vs_accuracy_gauss-blocks.csv" index 18 using 2:3 with steps dt 2 lw 1 lc rgb '#555555' title ""
 set title "pair-step seeding" noenhanced
 set key outside right top noenhanced opaque box samplen 2 spacing 1.1 font ',10'
 set colorbox
 plot "speed_vs_accuracy_gauss-blocks.csv" index 1 using 2:3:4:5:6 with yerrorbars pt variable ps 1.3 lw 1.5 lc rgb '#009E73' title "philox4x32", \
      "speed_vs_accuracy_gauss-blocks.csv" index 3 using 2:3:4:5:6 with yerrorbars pt variable ps 1.3 lw 1.5 lc rgb '#D55E00' title "saru", \
      "speed_vs_accuracy_gauss-blocks.csv" index 5 using 2:3:4:5:6 with yerrorbars pt variable ps 1.3 lw 1.5 lc rgb '#56B4E9' title "splitmix64", \
-     "speed_vs_accuracy_gauss-blocks.csv" index 7 using 2:3:4:5:6 with yerrorbars pt variable ps 1.3 lw 1.5 lc rgb '#0072B2' title "tea32", \
-     "speed_vs_accuracy_gauss-blocks.csv" index 9 using 2:3:4:5:6 with yerrorbars pt variable ps 1.3 lw 1.5 lc rgb '#E69F00' title "tea64", \
-     "speed_vs_accuracy_gauss-blocks.csv" index 11 using 2:3:4:5:6 with yerrorbars pt variable ps 1.3 lw 1.5 lc rgb '#CC79A7' title "threefry2x64", \
-     "speed_vs_accuracy_gauss-blocks.csv" index 14 using 2:3:(column(7) > 0 ? 9 : 11) with points pt variable ps 1.6 lc rgb '#333333' title "", \
-     "speed_vs_accuracy_gauss-blocks.csv" index 15 using 2:3:8 with labels offset 1,0 left font ',10' tc rgb '#333333' title "", \
-     "speed_vs_accuracy_gauss-blocks.csv" index 17 using 2:3 with steps dt 2 lw 1 lc rgb '#555555' title "", \
-     "speed_vs_accuracy_gauss-blocks.csv" index 18 using 2:3:8 with labels offset 0.8,0.6 left font ',10' tc rgb '#333333' title "", \
+     "speed_vs_accuracy_gauss-blocks.csv" index 7 using 2:3:4:5:6 with yerrorbars pt variable ps 1.3 lw 1.5 lc rgb '#999933' title "squares64", \
+     "speed_vs_accuracy_gauss-blocks.csv" index 9 using 2:3:4:5:6 with yerrorbars pt variable ps 1.3 lw 1.5 lc rgb '#0072B2' title "tea32", \
+     "speed_vs_accuracy_gauss-blocks.csv" index 11 using 2:3:4:5:6 with yerrorbars pt variable ps 1.3 lw 1.5 lc rgb '#E69F00' title "tea64", \
+     "speed_vs_accuracy_gauss-blocks.csv" index 13 using 2:3:4:5:6 with yerrorbars pt variable ps 1.3 lw 1.5 lc rgb '#CC79A7' title "threefry2x64", \
+     "speed_vs_accuracy_gauss-blocks.csv" index 16 using 2:3:(column(7) > 0 ? 9 : 11) with points pt variable ps 1.6 lc rgb '#333333' title "", \
+     "speed_vs_accuracy_gauss-blocks.csv" index 17 using 2:3:8 with labels offset 1,0 left font ',10' tc rgb '#333333' title "", \
+     "speed_vs_accuracy_gauss-blocks.csv" index 19 using 2:3 with steps dt 2 lw 1 lc rgb '#555555' title "", \
+     "speed_vs_accuracy_gauss-blocks.csv" index 20 using 2:3:8 with labels offset 0.8,0.6 left font ',10' tc rgb '#333333' title "", \
      keyentry with steps dt 2 lw 1 lc rgb '#555555' title "Pareto front", \
      keyentry with points pt 7 lc rgb 'black' title "1 round", \
      keyentry with points pt 10 lc rgb 'black' title "7 rounds", \

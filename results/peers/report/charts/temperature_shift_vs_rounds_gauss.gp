@@ -21,20 +21,22 @@ unset colorbox
 plot "temperature_shift_vs_rounds_gauss.csv" index 0 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#009E73' title "philox4x32", \
      "temperature_shift_vs_rounds_gauss.csv" index 2 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#D55E00' title "saru", \
      "temperature_shift_vs_rounds_gauss.csv" index 4 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#56B4E9' title "splitmix64", \
-     "temperature_shift_vs_rounds_gauss.csv" index 6 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
-     "temperature_shift_vs_rounds_gauss.csv" index 8 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
-     "temperature_shift_vs_rounds_gauss.csv" index 10 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64", \
-     "temperature_shift_vs_rounds_gauss.csv" index 12 using 2:3:(column(7) > 0 ? 9 : 11) with points pt variable ps 1.6 lc rgb '#333333' title "", \
-     "temperature_shift_vs_rounds_gauss.csv" index 13 using 2:3:8 with labels offset 1,0 left font ',10' tc rgb '#333333' title ""
+     "temperature_shift_vs_rounds_gauss.csv" index 6 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#999933' title "squares64", \
+     "temperature_shift_vs_rounds_gauss.csv" index 8 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
+     "temperature_shift_vs_rounds_gauss.csv" index 10 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
+     "temperature_shift_vs_rounds_gauss.csv" index 12 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64", \
+     "temperature_shift_vs_rounds_gauss.csv" index 14 using 2:3:(column(7) > 0 ? 9 : 11) with points pt variable ps 1.6 lc rgb '#333333' title "", \
+     "temperature_shift_vs_rounds_gauss.csv" index 15 using 2:3:8 with labels offset 1,0 left font ',10' tc rgb '#333333' title ""
 set title "pair-step seeding" noenhanced
 set key inside top right noenhanced opaque box samplen 2 spacing 1.1 font ',10'
 set colorbox
 plot "temperature_shift_vs_rounds_gauss.csv" index 1 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#009E73' title "philox4x32", \
      "temperature_shift_vs_rounds_gauss.csv" index 3 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#D55E00' title "saru", \
      "temperature_shift_vs_rounds_gauss.csv" index 5 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#56B4E9' title "splitmix64", \
-     "temperature_shift_vs_rounds_gauss.csv" index 7 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
-     "temperature_shift_vs_rounds_gauss.csv" index 9 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
-     "temperature_shift_vs_rounds_gauss.csv" index 11 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64", \
-     "temperature_shift_vs_rounds_gauss.csv" index 14 using 2:3:(column(7) > 0 ? 9 : 11) with points pt variable ps 1.6 lc rgb '#333333' title "", \
-     "temperature_shift_vs_rounds_gauss.csv" index 15 using 2:3:8 with labels offset 1,0 left font ',10' tc rgb '#333333' title ""
+     "temperature_shift_vs_rounds_gauss.csv" index 7 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#999933' title "squares64", \
+     "temperature_shift_vs_rounds_gauss.csv" index 9 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
+     "temperature_shift_vs_rounds_gauss.csv" index 11 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
+     "temperature_shift_vs_rounds_gauss.csv" index 13 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64", \
+     "temperature_shift_vs_rounds_gauss.csv" index 16 using 2:3:(column(7) > 0 ? 9 : 11) with points pt variable ps 1.6 lc rgb '#333333' title "", \
+     "temperature_shift_vs_rounds_gauss.csv" index 17 using 2:3:8 with labels offset 1,0 left font ',10' tc rgb '#333333' title ""
 unset multiplot
