@@ -2,10 +2,12 @@
 // the CSV beside it, so the committed pair redraws the chart on any machine with gnuplot.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <ostream>
 #include <sstream>
+#include <tuple>
 
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/common/output.hpp"
@@ -100,31 +102,72 @@ std::string plot_command(const Chart& c, std::size_t panel) {
   return drawn ? gp.str() : "";
 }
 
+// Small multiples whose panels split one chart's generators share their axes, so that panels compare at a
+// glance: the ranges over every panel's data (x, then y with its CI columns), unless the chart sets its own.
+std::string shared_ranges(const Chart& c) {
+  if (!c.key_per_panel) return "";
+  std::string out;
+  for (const auto& [which, axis, first, last] :
+       {std::tuple{"x", &c.x, std::size_t(0), std::size_t(0)}, std::tuple{"y", &c.y, std::size_t(1), std::size_t(3)}}) {
+    if (c.extra.find(std::string("set ") + which + "range") != std::string::npos) continue;
+    double lo = INFINITY, hi = -INFINITY;
+    const bool log = axis->scale == Scale::log10 || axis->scale == Scale::log2;
+    for (const auto& l : c.lines)
+      for (const auto& r : l.rows)
+        for (std::size_t k = first; k <= last && k < r.size(); ++k)
+          if (std::isfinite(r[k]) && (!log || r[k] > 0)) lo = std::min(lo, r[k]), hi = std::max(hi, r[k]);
+    if (!(lo <= hi)) continue;
+    const double pad = log ? 0 : 0.05 * std::max(hi - lo, std::abs(hi) * 1e-3 + 1e-12);
+    out += std::string("set ") + which + "range [" + num(log ? lo / 1.2 : lo - pad) + ":" +
+           num(log ? hi * 1.2 : hi + pad) + "]\n";
+  }
+  return out;
+}
+
 std::string script(const Chart& c) {
   std::ostringstream gp;
   gp << "# " << c.title << "\n# Data: " << c.name << ".csv (column 1 the series; one block per series)\n"
      << "# Redraw: gnuplot -e \"set terminal svg; set output '" << c.name << ".svg'\" " << c.name << ".gp\n";
   if (!c.panels.empty()) gp << "# small multiples: " << c.panels.size() << " panels\n";
+  const std::size_t cols = c.panel_columns ? c.panel_columns : std::min<std::size_t>(c.panels.size(), 3);
+  const std::size_t rows = c.panels.empty() ? 1 : (c.panels.size() + cols - 1) / cols;
+  // Panels keep a readable size: beyond two rows, or with a key beside each panel, the canvas grows.
+  if (rows > 2 || c.key_per_panel) gp << "# canvas: 900," << (c.key_per_panel ? 400 : 280) * std::max<std::size_t>(rows, 2) << "\n";
   gp << axis_settings(c.x, "x") << axis_settings(c.y, "y")
      << "set grid\nset datafile separator comma\nset datafile missing \"nan\"\n";
   const std::string key =
       c.key == "off" ? "unset key\n" : "set key " + c.key + " noenhanced opaque box samplen 2 spacing 1.1 font ',10'\n";
-  gp << (c.panels.empty() ? key : "unset key\n") << c.extra;
+  gp << (c.panels.empty() ? key : "unset key\n") << c.extra << shared_ranges(c);
   if (c.panels.empty()) return gp.str() + "set title " + q(c.title) + " noenhanced\n" + plot_command(c, 0);
-  const std::size_t cols = c.panels.size() <= 3 ? c.panels.size() : 3, rows = (c.panels.size() + cols - 1) / cols;
   gp << "set multiplot layout " << rows << ',' << cols << " title " << q(c.title) << " noenhanced\n";
-  for (std::size_t p = 0; p < c.panels.size(); ++p)
-    // The key and a palette's colour box once, beside the last panel.
-    gp << "set title " << q(c.panels[p]) << " noenhanced\n"
-       << (p + 1 == c.panels.size() ? key + "set colorbox\n" : "unset colorbox\n") << plot_command(c, p);
+  for (std::size_t p = 0; p < c.panels.size(); ++p) {
+    const bool last = p + 1 == c.panels.size();
+    // The key (in every panel when each holds lines of its own) and a palette's colour box beside the last panel.
+    gp << "set title " << q(c.panels[p]) << " noenhanced\n" << (last || c.key_per_panel ? key : "")
+       << (last ? "set colorbox\n" : "unset colorbox\n") << plot_command(c, p);
+  }
   gp << "unset multiplot\n";
   return gp.str();
 }
 
+// The canvas a script declares ("# canvas: W,H" among its first lines, for the SVG), else 900 × 560; the PNG's
+// is 11/9 as wide and 17/14 as tall (1100 × 680 by default).
+std::pair<int, int> canvas(const fs::path& script) {
+  std::ifstream in(script);
+  std::string line;
+  int w = 900, h = 560;
+  for (int k = 0; k < 8 && std::getline(in, line); ++k)
+    if (std::sscanf(line.c_str(), "# canvas: %d,%d", &w, &h) == 2) break;
+  return {w, h};
+}
+
 bool draw(const fs::path& dir, const std::string& name, std::ostream* log) {
   bool ok = true;
-  for (const auto& [term, ext] : {std::pair{"svg size 900,560 dynamic font 'sans,12'", "svg"},
-                                  std::pair{"pngcairo size 1100,680 font 'sans,11'", "png"}}) {
+  const auto [w, h] = canvas(dir / (name + ".gp"));
+  const std::string svg = "svg size " + std::to_string(w) + "," + std::to_string(h) + " dynamic font 'sans,12'";
+  const std::string png = "pngcairo size " + std::to_string(w * 11 / 9) + "," + std::to_string(h * 17 / 14) +
+                          " font 'sans,11'";
+  for (const auto& [term, ext] : {std::pair{svg.c_str(), "svg"}, std::pair{png.c_str(), "png"}}) {
     const std::string cmd = "cd '" + dir.string() + "' && gnuplot -e \"set terminal " + term + "; set output '" +
                             name + "." + ext + "'\" '" + name + ".gp' 2>'" + name + ".gnuplot.log'";
     if (std::system(cmd.c_str()) != 0) {

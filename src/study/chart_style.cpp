@@ -1,6 +1,7 @@
 // One look per generator across every chart: colour by family (the Okabe–Ito palette, readable with the common
 // colour-vision deficiencies), point type by round count, the reference in black; and the bands and lines that
 // every shift chart draws the same way.
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <utility>
@@ -13,10 +14,10 @@ namespace dpdrng::study::detail {
 std::string family_colour(const std::string& generator) {
   static const std::pair<const char*, const char*> colours[] = {
       {"mt19937", "#000000"},   {"tea32", "#0072B2"},    {"tea64", "#E69F00"},  {"philox4x32", "#009E73"},
-      {"threefry2x64", "#CC79A7"}, {"saru", "#D55E00"}, {"splitmix64", "#56B4E9"}, {"defect", "#7F7F7F"}};
+      {"threefry2x64", "#CC79A7"}, {"saru", "#D55E00"}, {"splitmix64", "#56B4E9"}, {"squares64", "#999933"}, {"defect", "#7F7F7F"}};
   for (const auto& [family, colour] : colours)
     if (generator.rfind(family, 0) == 0) return colour;
-  return "#999933";
+  return "#332288";  // any other generator (a plug-in)
 }
 
 // gnuplot's point types, one per round count a study sweeps: filled circle, square, triangle, diamond, inverted
@@ -37,6 +38,27 @@ std::string generator_style(const std::string& generator, int rounds) {
   std::ostringstream s;
   s << "lc rgb '" << family_colour(generator) << "' pt " << rounds_point(rounds);
   return s.str();
+}
+
+std::vector<std::vector<std::string>> generator_groups(const std::vector<std::string>& generators) {
+  const std::size_t n = generators.size();
+  const std::size_t k = std::max<std::size_t>(1, (n + kMaxSeriesPerPanel - 1) / kMaxSeriesPerPanel);
+  std::vector<std::vector<std::string>> groups(k);
+  for (std::size_t g = 0, at = 0; g < k; ++g)  // the first n mod k groups one larger
+    for (std::size_t i = 0; i < n / k + (g < n % k ? 1 : 0); ++i) groups[g].push_back(generators[at++]);
+  return groups;
+}
+
+std::size_t group_of(const std::vector<std::vector<std::string>>& groups, const std::string& generator) {
+  for (std::size_t g = 0; g < groups.size(); ++g)
+    if (std::find(groups[g].begin(), groups[g].end(), generator) != groups[g].end()) return g;
+  return 0;
+}
+
+std::string panel_title(const std::string& prefix, std::size_t group, std::size_t groups) {
+  if (groups < 2) return prefix;
+  return prefix + (prefix.empty() ? "" : ", ") + "generators " + std::to_string(group + 1) + " of " +
+         std::to_string(groups);
 }
 
 std::string margin_band(double margin, const std::string& what) {

@@ -43,6 +43,10 @@ struct Chart {
   // Small multiples: panels of one quantity side by side, titled, each line in its `panel` (at most six series
   // in each; empty: one panel).
   std::vector<std::string> panels = {};
+  // The key in every panel (each panel's lines are its own, as when the generators are split into groups), not
+  // only beside the last.
+  bool key_per_panel = false;
+  std::size_t panel_columns = 0;  // the panels' columns (0: up to three)
   // Key entries that draw no data (what a point type means): gnuplot "keyentry …" plot elements.
   std::vector<std::string> key_entries = {};
 };
@@ -62,6 +66,14 @@ std::string family_colour(const std::string& generator);
 int rounds_point(int rounds);
 std::string colour_style(const std::string& generator);                  // "lc rgb '#…'"
 std::string generator_style(const std::string& generator, int rounds);  // "lc rgb '#…' pt N"
+// Small multiples for charts that draw a line per generator: the generators (distinct, in the chart's order) split
+// evenly over as few panels as hold at most six each (one group when six or fewer).
+constexpr std::size_t kMaxSeriesPerPanel = 6;
+std::vector<std::vector<std::string>> generator_groups(const std::vector<std::string>& generators);
+std::size_t group_of(const std::vector<std::vector<std::string>>& groups, const std::string& generator);
+// A panel's title: `prefix` ("distance seeding", a component, or empty) and, when there are several groups,
+// "generators g of n" (each panel's key names its generators).
+std::string panel_title(const std::string& prefix, std::size_t group, std::size_t groups);
 // The equivalence margin ±m as a shaded band and the zero line, for a shift axis.
 std::string margin_band(double margin, const std::string& what);
 // A horizontal reference line with its label at the left edge.

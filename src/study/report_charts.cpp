@@ -107,29 +107,50 @@ void fit_shift_axis(Chart& c, double margin, std::vector<Line*> data) {
   }
 }
 
-// The seedings of a noise's variants, in order: one panel each when there are several (each generator's lines
-// of one seeding stay within six series).
-std::vector<std::string> seeding_panels(const Analysis& a, const std::string& dist) {
-  std::vector<std::string> s;
-  for (const auto& v : a.variants)
-    if (!v.key.reference && v.key.noise() == dist &&
-        std::find(s.begin(), s.end(), v.key.seeding_name()) == s.end())
-      s.push_back(v.key.seeding_name());
-  if (s.size() < 2) return {};
-  for (auto& name : s) name += " seeding";
-  return s;
+// The panels of a noise's charts: one per seeding when the study sweeps several, and within each, where the
+// noise has more than six generators, one per group of generators (detail::generator_groups); none when one seeding
+// and one group suffice. Panel s × groups + g holds seeding s's lines of group g's generators.
+struct PanelPlan {
+  std::vector<std::string> seedings;
+  std::vector<std::vector<std::string>> groups;
+  std::vector<std::string> titles;
+  // The chart's panels: a row per seeding, a column per group when the generators are split.
+  void apply(Chart& c) const {
+    c.panels = titles;
+    c.key_per_panel = groups.size() > 1;
+    if (groups.size() > 1) c.panel_columns = groups.size();
+  }
+  std::size_t of(const VariantKey& k) const {
+    const auto s = std::find(seedings.begin(), seedings.end(), k.seeding_name());
+    const std::size_t si = s == seedings.end() ? 0 : std::size_t(s - seedings.begin());
+    return si * groups.size() + detail::group_of(groups, k.generator);
+  }
+};
+
+PanelPlan panel_plan(const Analysis& a, const std::string& dist) {
+  PanelPlan p;
+  std::vector<std::string> generators;
+  for (const auto& v : a.variants) {
+    if (v.key.reference || v.key.noise() != dist) continue;
+    if (std::find(p.seedings.begin(), p.seedings.end(), v.key.seeding_name()) == p.seedings.end())
+      p.seedings.push_back(v.key.seeding_name());
+    if (std::find(generators.begin(), generators.end(), v.key.generator) == generators.end())
+      generators.push_back(v.key.generator);
+  }
+  std::sort(generators.begin(), generators.end());  // the order of families(): by name
+  p.groups = detail::generator_groups(generators);
+  if (p.seedings.size() < 2 && p.groups.size() < 2) return p;
+  for (const auto& s : p.seedings)
+    for (std::size_t g = 0; g < p.groups.size(); ++g)
+      p.titles.push_back(detail::panel_title(p.seedings.size() < 2 ? "" : s + " seeding", g, p.groups.size()));
+  return p;
 }
 
-std::size_t panel_of(const std::vector<std::string>& panels, const VariantKey& k) {
-  for (std::size_t p = 0; p < panels.size(); ++p)
-    if (panels[p] == k.seeding_name() + " seeding") return p;
-  return 0;
-}
-
-// A family's line in the family's colour, in its seeding's panel (titled by the generator alone there).
-Line family_line(const Chart& c, const std::string& family, const VariantReport& first, const std::string& style) {
+// A family's line in the family's colour, in its panel (titled by the generator alone there).
+Line family_line(const Chart& c, const PanelPlan& plan, const std::string& family, const VariantReport& first,
+                 const std::string& style) {
   return Line{c.panels.empty() ? family : first.key.generator, style + " " + detail::colour_style(first.key.generator),
-              {}, {}, panel_of(c.panels, first.key)};
+              {}, {}, plan.titles.empty() ? 0 : plan.of(first.key)};
 }
 const Axis kRoundsAxis{"hash rounds", "1", Scale::log2};
 
@@ -140,9 +161,10 @@ Chart temperature_shift(const Analysis& a, const std::string& dist) {
   c.columns.front() = "rounds";
   const double margin = 100 * temperature_margin(a);
   c.extra = detail::margin_band(margin, "equivalence margin");
-  c.panels = seeding_panels(a, dist);
+  const PanelPlan plan = panel_plan(a, dist);
+  plan.apply(c);
   for (const auto& [fam, vs] : families(a, dist)) {
-    Line l = family_line(c, fam, *vs.front(), "using 2:3:4:5 with yerrorlines lw 2 pt 7");
+    Line l = family_line(c, plan, fam, *vs.front(), "using 2:3:4:5 with yerrorlines lw 2 pt 7");
     for (const auto* v : vs)
       if (const auto* t = temperature(*v)) {
         l.rows.push_back({double(v->key.rounds), 100 * t->shift, 100 * t->ci_low, 100 * t->ci_high});
@@ -196,15 +218,16 @@ Chart speed_accuracy(const Analysis& a, const std::string& dist) {
                detail::num(ref->ns_per_number) + ", graph 1 nohead dt 2 lc rgb 'black'\nset label " +
                detail::q(ref->key.label()) + " at first " + detail::num(ref->ns_per_number) +
                ", graph 0.96 offset 0.5,0 font ',10'\n";
-  c.panels = seeding_panels(a, dist);
+  const PanelPlan plan = panel_plan(a, dist);
+  plan.apply(c);
   const std::size_t panels = std::max<std::size_t>(c.panels.size(), 1);
   std::vector<std::vector<std::vector<double>>> all(panels);
   std::vector<int> rounds;
   std::vector<Line> named(panels);
   double lo = ref && ref->ns_per_number > 0 ? ref->ns_per_number : INFINITY, hi = lo > 0 && std::isfinite(lo) ? lo : 0;
   for (const auto& [fam, vs] : families(a, dist)) {
-    const std::size_t panel = panel_of(c.panels, vs.front()->key);
-    Line l = family_line(c, fam, *vs.front(), "using 2:3:4:5:6 with yerrorbars pt variable ps 1.3 lw 1.5");
+    const std::size_t panel = plan.titles.empty() ? 0 : plan.of(vs.front()->key);
+    Line l = family_line(c, plan, fam, *vs.front(), "using 2:3:4:5:6 with yerrorbars pt variable ps 1.3 lw 1.5");
     for (const auto* v : vs) {
       const auto* t = temperature(*v);
       if (!t || !std::isfinite(v->ns_per_number) || v->ns_per_number <= 0) continue;
@@ -225,8 +248,12 @@ Chart speed_accuracy(const Analysis& a, const std::string& dist) {
   for (auto& l : c.lines) data.push_back(&l);
   fit_shift_axis(c, margin, data);
   for (std::size_t p = 0; p < panels; ++p) {
+    // The front over every generator of the panel's seeding, also where they are split over several panels.
+    const std::size_t per_seeding = plan.titles.empty() ? 1 : plan.groups.size(), first = p / per_seeding * per_seeding;
+    std::vector<std::vector<double>> seeding_points;
+    for (std::size_t q = first; q < first + per_seeding; ++q) seeding_points.insert(seeding_points.end(), all[q].begin(), all[q].end());
     Line front{"", "using 2:3 with steps dt 2 lw 1 lc rgb '#555555'", {}, {}, p};
-    front.rows = pareto_front(all[p]);
+    front.rows = pareto_front(seeding_points);
     if (front.rows.size() > 1) c.lines.push_back(std::move(front));
     named[p].style = "using 2:3:8 with labels offset 0.8,0.6 left font ',10' tc rgb '#333333'";
     named[p].panel = p;
@@ -243,8 +270,10 @@ Chart speed_accuracy(const Analysis& a, const std::string& dist) {
 // The temperature shift ⟨ζ²⟩'s effective power predicts against the one measured, per family: on the identity
 // line when the noise's second moment explains the shift.
 Chart predicted_measured(const Analysis& a) {
-  Chart c{"predicted_vs_measured", "Temperature shift: predicted from the noise's effective power against measured",
-          Axis{"predicted shift (w_R²-weighted ⟨ζ²⟩ and its lag correlations), 95 % CI", "%"},
+  Chart c{"predicted_vs_measured",
+          "k_BT shift predicted from the noise's effective power (w_R²-weighted ⟨ζ²⟩ and its lag correlations) "
+          "against measured",
+          Axis{"predicted shift, 95 % CI", "%"},
           Axis{"measured k_BT shift against MT19937, 95 % CI", "%"},
           {"predicted_pct", "measured_pct", "predicted_ci_low_pct", "predicted_ci_high_pct", "measured_ci_low_pct",
            "measured_ci_high_pct", "point_type"}};
@@ -256,6 +285,7 @@ Chart predicted_measured(const Analysis& a) {
   std::map<std::string, Line> by_family;  // colour: family; shape: rounds; every noise and seeding in one panel
   std::vector<int> rounds;
   Line named{"", "using 2:3:9 with labels offset 1,-0.6 left font ',10' tc rgb '#333333'", {}, {}};
+  std::vector<std::string> named_family;  // beside named's rows
   for (const auto& v : a.variants) {
     const auto* t = temperature(v);
     if (v.key.reference || !t || !std::isfinite(v.power_predicted_shift.value)) continue;
@@ -276,10 +306,31 @@ Chart predicted_measured(const Analysis& a) {
     if (std::isfinite(margin) && std::abs(m) > margin) {
       named.rows.push_back({p, m});
       named.labels.push_back(v.key.label_and_seeding() + " " + v.key.noise());
+      named_family.push_back(v.key.generator);
     }
   }
-  for (auto& [f, l] : by_family) c.lines.push_back(std::move(l));
-  if (!named.rows.empty()) c.lines.push_back(std::move(named));
+  // More than six families: a panel per group of them, each variant's name in its family's panel.
+  std::vector<std::string> families_drawn;
+  for (const auto& [f, l] : by_family) families_drawn.push_back(f);
+  const auto groups = detail::generator_groups(families_drawn);
+  if (groups.size() > 1)
+    for (std::size_t g = 0; g < groups.size(); ++g) c.panels.push_back(detail::panel_title("", g, groups.size()));
+  c.key_per_panel = groups.size() > 1;
+  if (groups.size() > 1) c.panel_columns = groups.size();
+  std::vector<Line> names(groups.size(), named);
+  for (auto& n : names) n.rows.clear(), n.labels.clear();
+  for (std::size_t k = 0; k < named.rows.size(); ++k) {
+    const std::size_t g = detail::group_of(groups, named_family[k]);
+    names[g].rows.push_back(named.rows[k]);
+    names[g].labels.push_back(named.labels[k]);
+    names[g].panel = g;
+  }
+  for (auto& [f, l] : by_family) {
+    l.panel = detail::group_of(groups, f);
+    c.lines.push_back(std::move(l));
+  }
+  for (auto& n : names)
+    if (!n.rows.empty()) c.lines.push_back(std::move(n));
   c.key_entries = rounds_key(rounds);
   if (off_scale > 0) c.title += " (" + std::to_string(off_scale) + " beyond ±10 % not drawn)";
   const double pad = 0.1 * std::max(hi - lo, 0.5);
@@ -298,13 +349,21 @@ Chart cost_rounds(const Analysis& a, const std::string& dist) {
           Axis{"cost per random number (generator + distribution)", "ns", Scale::log2}, {"rounds", "ns_per_number"}};
   c.key = "inside bottom right";
   if (ref) c.extra += detail::hline(ref->ns_per_number, ref->key.label(), "black");
-  c.panels = seeding_panels(a, dist);
+  const PanelPlan plan = panel_plan(a, dist);
+  plan.apply(c);
   for (const auto& [fam, vs] : families(a, dist)) {
-    Line l = family_line(c, fam, *vs.front(), "using 2:3 with linespoints lw 2 pt 7");
+    Line l = family_line(c, plan, fam, *vs.front(), "using 2:3 with linespoints lw 2 pt 7");
     for (const auto* v : vs)
       if (std::isfinite(v->ns_per_number) && v->ns_per_number > 0)
         l.rows.push_back({double(v->key.rounds), v->ns_per_number});
     c.lines.push_back(std::move(l));
+  }
+  // Panels of split generators share a range that holds the reference's level too.
+  if (c.key_per_panel && ref && std::isfinite(ref->ns_per_number) && ref->ns_per_number > 0) {
+    double lo = ref->ns_per_number, hi = lo;
+    for (const auto& l : c.lines)
+      for (const auto& r : l.rows) lo = std::min(lo, r[1]), hi = std::max(hi, r[1]);
+    c.extra += "set yrange [" + detail::num(lo / 1.2) + ":" + detail::num(hi * 1.2) + "]\n";
   }
   return c;
 }
@@ -324,9 +383,10 @@ Chart pass_rounds(const Analysis& a, const std::string& dist, const std::string&
         c.extra += detail::hline(p.fraction, "", "black");
         break;
       }
-  c.panels = seeding_panels(a, dist);
+  const PanelPlan plan = panel_plan(a, dist);
+  plan.apply(c);
   for (const auto& [fam, vs] : families(a, dist)) {
-    Line l = family_line(c, fam, *vs.front(), "using 2:3:4:5 with yerrorlines lw 2 pt 7");
+    Line l = family_line(c, plan, fam, *vs.front(), "using 2:3:4:5 with yerrorlines lw 2 pt 7");
     for (const auto* v : vs) {
       const PassSummary* worst = nullptr;
       for (const auto& p : v->passes)

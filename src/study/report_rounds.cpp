@@ -119,31 +119,47 @@ struct Origin {
 };
 
 // With several seedings, each (component) panel splits into one per seeding, each generator's line in its
-// seeding's panel titled by the generator alone and the reference's level in every panel of its component: the
-// panels then hold one line per generator, within six. `origins` runs parallel to the chart's lines.
-void by_seeding(detail::Chart& c, const std::vector<Origin>& origins) {
-  std::vector<std::string> seedings;
-  for (const auto& o : origins)
-    if (!o.seeding.empty() && std::find(seedings.begin(), seedings.end(), o.seeding) == seedings.end())
-      seedings.push_back(o.seeding);
-  if (seedings.size() < 2) return;
+// seeding's panel titled by the generator alone; with more than six generators, each splits again into one per
+// group of generators (detail::generator_groups). The reference's level is drawn in every panel of its component.
+// `origins` runs parallel to the chart's lines.
+void split_panels(detail::Chart& c, const std::vector<Origin>& origins) {
+  std::vector<std::string> seedings, generators;
+  for (const auto& o : origins) {
+    if (o.seeding.empty()) continue;
+    if (std::find(seedings.begin(), seedings.end(), o.seeding) == seedings.end()) seedings.push_back(o.seeding);
+    if (std::find(generators.begin(), generators.end(), o.generator) == generators.end())
+      generators.push_back(o.generator);
+  }
+  std::sort(generators.begin(), generators.end());
+  const auto groups = detail::generator_groups(generators);
+  const bool by_seeding = seedings.size() > 1, by_group = groups.size() > 1;
+  if (!by_seeding && !by_group) return;
   const std::vector<std::string> components = c.panels.empty() ? std::vector<std::string>{""} : c.panels;
   c.panels.clear();
   for (const auto& comp : components)
-    for (const auto& s : seedings) c.panels.push_back((comp.empty() ? "" : comp + ", ") + s + " seeding");
+    for (const auto& s : seedings)
+      for (std::size_t g = 0; g < groups.size(); ++g) {
+        std::string t = comp;
+        if (by_seeding) t += (t.empty() ? "" : ", ") + s + " seeding";
+        c.panels.push_back(detail::panel_title(t, g, groups.size()));
+      }
+  c.key_per_panel = by_group;
+  if (by_group) c.panel_columns = groups.size();
+  const std::size_t per_component = seedings.size() * groups.size();
   std::vector<detail::Line> out;
   for (std::size_t k = 0; k < c.lines.size(); ++k) {
     detail::Line& l = c.lines[k];
-    const std::size_t first = l.panel * seedings.size();
-    if (origins[k].seeding.empty()) {  // the reference's level, in each seeding's panel
-      for (std::size_t s = 0; s < seedings.size(); ++s) {
+    const std::size_t first = l.panel * per_component;
+    if (origins[k].seeding.empty()) {  // the reference's level, in each panel of its component
+      for (std::size_t s = 0; s < per_component; ++s) {
         out.push_back(l);
         out.back().panel = first + s;
       }
       continue;
     }
-    l.title = origins[k].generator;
-    l.panel = first + std::size_t(std::find(seedings.begin(), seedings.end(), origins[k].seeding) - seedings.begin());
+    if (by_seeding) l.title = origins[k].generator;
+    const std::size_t s = std::size_t(std::find(seedings.begin(), seedings.end(), origins[k].seeding) - seedings.begin());
+    l.panel = first + s * groups.size() + detail::group_of(groups, origins[k].generator);
     out.push_back(std::move(l));
   }
   c.lines = std::move(out);
@@ -225,7 +241,7 @@ std::vector<std::string> write_rounds_charts(const std::vector<RoundsRow>& rows,
       c.lines.push_back(std::move(l));
       order.push_back(origins[name][t]);
     }
-    by_seeding(c, order);
+    split_panels(c, order);
     // A log axis only where the values span a decade (64TEA(1)'s components at tens of k_BT); otherwise the
     // few-% differences stay visible on a linear one.
     if (c.y.unit == "k_BT" && !(lo > 0 && hi / lo > 10)) c.y.scale = detail::Scale::linear;

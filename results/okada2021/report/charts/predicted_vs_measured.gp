@@ -1,7 +1,7 @@
-# Temperature shift: predicted from the noise's effective power against measured (8 beyond ±10 % not drawn)
+# k_BT shift predicted from the noise's effective power (w_R²-weighted ⟨ζ²⟩ and its lag correlations) against measured (8 beyond ±10 % not drawn)
 # Data: predicted_vs_measured.csv (column 1 the series; one block per series)
 # Redraw: gnuplot -e "set terminal svg; set output 'predicted_vs_measured.svg'" predicted_vs_measured.gp
-set xlabel "predicted shift (w_R²-weighted ⟨ζ²⟩ and its lag correlations), 95 % CI [%]" noenhanced
+set xlabel "predicted shift, 95 % CI [%]" noenhanced
 set ylabel "measured k_BT shift against MT19937, 95 % CI [%]" noenhanced
 set grid
 set datafile separator comma
@@ -12,7 +12,7 @@ set yrange [-4.43681:1.58974]
 set size ratio -1
 set arrow from -4.43681,-4.43681 to 1.58974,1.58974 nohead dt 2 lc rgb 'black'
 set label "dashed: identity (prediction exact)" at graph 0.98, graph 0.04 right font ',10'
-set title "Temperature shift: predicted from the noise's effective power against measured (8 beyond ±10 % not drawn)" noenhanced
+set title "k_BT shift predicted from the noise's effective power (w_R²-weighted ⟨ζ²⟩ and its lag correlations) against measured (8 beyond ±10 % not drawn)" noenhanced
 plot "predicted_vs_measured.csv" index 0 using 2:3:4:5:6:7 with xyerrorbars pt 7 ps 0.6 lc rgb '#0072B2' title "tea32", \
      "predicted_vs_measured.csv" index 0 using 2:3:8 with points pt variable ps 1.3 lc rgb '#0072B2' notitle, \
      "predicted_vs_measured.csv" index 1 using 2:3:4:5:6:7 with xyerrorbars pt 7 ps 0.6 lc rgb '#E69F00' title "tea64", \

@@ -1,7 +1,8 @@
 # Kinetic temperature per component, replica mean ± 95 % CI (gauss-blocks; Fig. 4b)
 # Data: temperature_components_vs_rounds_gauss-blocks.csv (column 1 the series; one block per series)
 # Redraw: gnuplot -e "set terminal svg; set output 'temperature_components_vs_rounds_gauss-blocks.svg'" temperature_components_vs_rounds_gauss-blocks.gp
-# small multiples: 6 panels
+# small multiples: 12 panels
+# canvas: 900,2400
 set xlabel "hash rounds [1]" noenhanced
 set logscale x 2
 set format x "%g"
@@ -13,67 +14,98 @@ set grid
 set datafile separator comma
 set datafile missing "nan"
 unset key
-set multiplot layout 2,3 title "Kinetic temperature per component, replica mean ± 95 % CI (gauss-blocks; Fig. 4b)" noenhanced
-set title "T_x, distance seeding" noenhanced
+set xrange [0.833333:24]
+set yrange [3.41173e-07:7.8672]
+set multiplot layout 6,2 title "Kinetic temperature per component, replica mean ± 95 % CI (gauss-blocks; Fig. 4b)" noenhanced
+set title "T_x, distance seeding, generators 1 of 2" noenhanced
+set key inside top right noenhanced opaque box samplen 2 spacing 1.1 font ',10'
 unset colorbox
 plot "temperature_components_vs_rounds_gauss-blocks.csv" index 0 using 2:3 with lines dt 2 lw 2 lc rgb 'black' title "", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 6 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#009E73' title "philox4x32", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 12 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#D55E00' title "saru", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 18 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#56B4E9' title "splitmix64", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 24 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#999933' title "squares64", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 30 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 36 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 42 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64"
-set title "T_x, pair-step seeding" noenhanced
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 12 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#009E73' title "philox4x32", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 18 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#D55E00' title "saru", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 24 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#56B4E9' title "splitmix64", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 30 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#999933' title "squares64"
+set title "T_x, distance seeding, generators 2 of 2" noenhanced
+set key inside top right noenhanced opaque box samplen 2 spacing 1.1 font ',10'
 unset colorbox
 plot "temperature_components_vs_rounds_gauss-blocks.csv" index 1 using 2:3 with lines dt 2 lw 2 lc rgb 'black' title "", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 9 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#009E73' title "philox4x32", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 15 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#D55E00' title "saru", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 21 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#56B4E9' title "splitmix64", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 27 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#999933' title "squares64", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 33 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 39 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 45 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64"
-set title "T_y, distance seeding" noenhanced
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 36 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 42 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 48 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64"
+set title "T_x, pair-step seeding, generators 1 of 2" noenhanced
+set key inside top right noenhanced opaque box samplen 2 spacing 1.1 font ',10'
 unset colorbox
 plot "temperature_components_vs_rounds_gauss-blocks.csv" index 2 using 2:3 with lines dt 2 lw 2 lc rgb 'black' title "", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 7 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#009E73' title "philox4x32", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 13 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#D55E00' title "saru", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 19 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#56B4E9' title "splitmix64", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 25 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#999933' title "squares64", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 31 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 37 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 43 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64"
-set title "T_y, pair-step seeding" noenhanced
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 15 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#009E73' title "philox4x32", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 21 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#D55E00' title "saru", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 27 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#56B4E9' title "splitmix64", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 33 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#999933' title "squares64"
+set title "T_x, pair-step seeding, generators 2 of 2" noenhanced
+set key inside top right noenhanced opaque box samplen 2 spacing 1.1 font ',10'
 unset colorbox
 plot "temperature_components_vs_rounds_gauss-blocks.csv" index 3 using 2:3 with lines dt 2 lw 2 lc rgb 'black' title "", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 10 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#009E73' title "philox4x32", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 16 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#D55E00' title "saru", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 22 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#56B4E9' title "splitmix64", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 28 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#999933' title "squares64", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 34 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 40 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 46 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64"
-set title "T_z, distance seeding" noenhanced
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 39 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 45 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 51 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64"
+set title "T_y, distance seeding, generators 1 of 2" noenhanced
+set key inside top right noenhanced opaque box samplen 2 spacing 1.1 font ',10'
 unset colorbox
 plot "temperature_components_vs_rounds_gauss-blocks.csv" index 4 using 2:3 with lines dt 2 lw 2 lc rgb 'black' title "", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 8 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#009E73' title "philox4x32", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 14 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#D55E00' title "saru", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 20 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#56B4E9' title "splitmix64", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 26 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#999933' title "squares64", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 32 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 38 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 44 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64"
-set title "T_z, pair-step seeding" noenhanced
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 13 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#009E73' title "philox4x32", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 19 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#D55E00' title "saru", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 25 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#56B4E9' title "splitmix64", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 31 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#999933' title "squares64"
+set title "T_y, distance seeding, generators 2 of 2" noenhanced
+set key inside top right noenhanced opaque box samplen 2 spacing 1.1 font ',10'
+unset colorbox
+plot "temperature_components_vs_rounds_gauss-blocks.csv" index 5 using 2:3 with lines dt 2 lw 2 lc rgb 'black' title "", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 37 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 43 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 49 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64"
+set title "T_y, pair-step seeding, generators 1 of 2" noenhanced
+set key inside top right noenhanced opaque box samplen 2 spacing 1.1 font ',10'
+unset colorbox
+plot "temperature_components_vs_rounds_gauss-blocks.csv" index 6 using 2:3 with lines dt 2 lw 2 lc rgb 'black' title "", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 16 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#009E73' title "philox4x32", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 22 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#D55E00' title "saru", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 28 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#56B4E9' title "splitmix64", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 34 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#999933' title "squares64"
+set title "T_y, pair-step seeding, generators 2 of 2" noenhanced
+set key inside top right noenhanced opaque box samplen 2 spacing 1.1 font ',10'
+unset colorbox
+plot "temperature_components_vs_rounds_gauss-blocks.csv" index 7 using 2:3 with lines dt 2 lw 2 lc rgb 'black' title "", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 40 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 46 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 52 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64"
+set title "T_z, distance seeding, generators 1 of 2" noenhanced
+set key inside top right noenhanced opaque box samplen 2 spacing 1.1 font ',10'
+unset colorbox
+plot "temperature_components_vs_rounds_gauss-blocks.csv" index 8 using 2:3 with lines dt 2 lw 2 lc rgb 'black' title "", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 14 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#009E73' title "philox4x32", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 20 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#D55E00' title "saru", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 26 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#56B4E9' title "splitmix64", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 32 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#999933' title "squares64"
+set title "T_z, distance seeding, generators 2 of 2" noenhanced
+set key inside top right noenhanced opaque box samplen 2 spacing 1.1 font ',10'
+unset colorbox
+plot "temperature_components_vs_rounds_gauss-blocks.csv" index 9 using 2:3 with lines dt 2 lw 2 lc rgb 'black' title "", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 38 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 44 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 50 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64"
+set title "T_z, pair-step seeding, generators 1 of 2" noenhanced
+set key inside top right noenhanced opaque box samplen 2 spacing 1.1 font ',10'
+unset colorbox
+plot "temperature_components_vs_rounds_gauss-blocks.csv" index 10 using 2:3 with lines dt 2 lw 2 lc rgb 'black' title "", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 17 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#009E73' title "philox4x32", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 23 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#D55E00' title "saru", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 29 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#56B4E9' title "splitmix64", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 35 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#999933' title "squares64"
+set title "T_z, pair-step seeding, generators 2 of 2" noenhanced
 set key inside top right noenhanced opaque box samplen 2 spacing 1.1 font ',10'
 set colorbox
-plot "temperature_components_vs_rounds_gauss-blocks.csv" index 5 using 2:3 with lines dt 2 lw 2 lc rgb 'black' title "", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 11 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#009E73' title "philox4x32", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 17 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#D55E00' title "saru", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 23 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#56B4E9' title "splitmix64", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 29 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#999933' title "squares64", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 35 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 41 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
-     "temperature_components_vs_rounds_gauss-blocks.csv" index 47 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64", \
+plot "temperature_components_vs_rounds_gauss-blocks.csv" index 11 using 2:3 with lines dt 2 lw 2 lc rgb 'black' title "", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 41 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#0072B2' title "tea32", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 47 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#E69F00' title "tea64", \
+     "temperature_components_vs_rounds_gauss-blocks.csv" index 53 using 2:3:4:5 with yerrorlines lw 2 pt 7 lc rgb '#CC79A7' title "threefry2x64", \
      keyentry with lines dt 2 lw 2 lc rgb 'black' title "mt19937 (reference)"
 unset multiplot
