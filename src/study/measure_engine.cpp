@@ -198,7 +198,7 @@ void record_run(const dpd::RunResult& r, CellResult& out) {
   // The kinetic temperature and its fluctuation under the observable table's names; each standard error's
   // degrees of freedom beside it.
   const Observable& kinetic = kinetic_temperature();
-  const Observable& fluctuation = observable("temperature_std");
+  const Observable& fluctuation = observable_row("temperature_std");
   sc[kinetic.key] = r.temperature.mean;
   sc[kinetic.sem] = r.temperature.sem;
   sc[std::string(kinetic.sem) + "_dof"] = r.temperature.sem_dof;

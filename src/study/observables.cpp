@@ -35,6 +35,7 @@ std::vector<Observable> make() {
                       .scenes = scene, .margin_key = margin_key, .margin = margin, .jackknife = jackknife,
                       .threshold = threshold, .relative_threshold = relative, .weight_exponent = weight};
   };
+  // The kinetic temperature's row first: kinetic_temperature() is the table's first row.
   return {
       shift("temperature_mean", "temperature_sem", kEnergy, "T", "temperature", 0.005, B::kT),
       shift("temperature_std", "temperature_std_sem", kEnergy, "T fluctuation", "temperature_std", 0.02),
@@ -154,7 +155,7 @@ bool is_kinetic_temperature(std::string_view comparison) {
   return false;
 }
 
-const Observable& observable(std::string_view name) {
+const Observable& observable_row(std::string_view name) {
   for (const auto& o : observables())
     if (o.name == name) return o;
   throw std::out_of_range("no observable " + std::string(name));

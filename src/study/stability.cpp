@@ -89,7 +89,7 @@ double pooled_half_width(const std::vector<double>& own, const std::vector<std::
 
 // Each point's k_BT and T_conf CIs under the pooled model (`oks`: each point's stable cells, in point order).
 void pool_cis(StabilityAnalysis& a, const std::vector<std::vector<const CellResult*>>& oks) {
-  for (const Observable* o : {&kinetic_temperature(), &observable("temperature_conf_mean")}) {
+  for (const Observable* o : {&kinetic_temperature(), &observable_row("temperature_conf_mean")}) {
     const char* name = o->key;
     const bool conf = o != &kinetic_temperature();
     for (std::size_t k = 0; k < a.points.size(); ++k) {

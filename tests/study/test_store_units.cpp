@@ -161,10 +161,18 @@ TEST(ObservableTable, EveryRowIsComplete) {
     EXPECT_NE(std::string(o.label), "");
     EXPECT_NE(o.scenes, 0u);
     EXPECT_EQ(unit_of(o.key), o.unit);
-    if (o.sem) EXPECT_EQ(unit_of(o.sem), o.unit);
-    if (o.rule == Rule::shift) EXPECT_NE(std::string(o.margin_key), "");
-    if (o.rule == Rule::paired) EXPECT_NE(std::string(o.what), "");
-    if (o.rule == Rule::curve) EXPECT_EQ(o.sem, nullptr);
+    if (o.sem) {
+      EXPECT_EQ(unit_of(o.sem), o.unit);
+    }
+    if (o.rule == Rule::shift) {
+      EXPECT_NE(std::string(o.margin_key), "");
+    }
+    if (o.rule == Rule::paired) {
+      EXPECT_NE(std::string(o.what), "");
+    }
+    if (o.rule == Rule::curve) {
+      EXPECT_EQ(o.sem, nullptr);
+    }
   }
 }
 
@@ -176,7 +184,7 @@ TEST(ObservableTable, KineticTemperatureIsOneCellScalarUnderTwoComparisons) {
   EXPECT_EQ(std::string(bilayer_observables().front().key), t.key);
   EXPECT_FALSE(is_kinetic_temperature("temperature_conf_mean"));
   EXPECT_FALSE(is_kinetic_temperature("pressure_mean"));
-  EXPECT_THROW(observable("no_such_observable"), std::out_of_range);
+  EXPECT_THROW(observable_row("no_such_observable"), std::out_of_range);
 }
 
 TEST(ObservableTable, UnitsAndCountsOfStoredNames) {

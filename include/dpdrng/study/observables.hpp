@@ -61,7 +61,7 @@ std::vector<Observable> budget_observables(Scene scene);
 const Observable& kinetic_temperature();
 bool is_kinetic_temperature(std::string_view comparison);
 // The row of a comparison name (std::out_of_range for one not listed).
-const Observable& observable(std::string_view name);
+const Observable& observable_row(std::string_view name);
 
 // Every margin key with its default, in table order: what [tests.margins] accepts. Observables may share a key
 // (the pressure tensor's components); the first sets the default.
