@@ -89,9 +89,9 @@ void run_study(const DecomposeArgs& a) {
   o.shard = study::parse_shard(a.shard);
   o.progress = a.quiet ? nullptr : &std::cerr;
   begin_work();
-  study::DecompStore store(a.out);
+  const study::CellStore store(a.out);
   prepare_output_directory(store.dir(), "--out");
-  store.open_for(sw);
+  study::open_decomp_store(store, sw);
   const std::size_t total = study::decomp_cells(sw).size();
   if (!a.quiet)
     std::cerr << "[decompose] " << sw.name << ": " << total << " cells (" << sw.domains.size()
@@ -108,6 +108,7 @@ void run_study(const DecomposeArgs& a) {
               << store.dir() << "\n";
     return;
   }
+  study::assemble_decomp_store(store, sw);
   const std::string md = study::write_decomp_outputs(sw, rows, a.out, a.quiet ? nullptr : &std::cerr);
   if (a.json) {
     nlohmann::json j = nlohmann::json::array();

@@ -103,7 +103,7 @@ void compare(VariantReport& v, const VariantReport& ref, const detail::Reference
     if (c.note != "not measured") v.observables.push_back(std::move(c));
   };
   if (bilayer) {
-    for (const auto& o : bilayer_observables()) v.observables.push_back(detail::compare_paired(o.name, v, ref));
+    for (const auto& o : bilayer_observables()) v.observables.push_back(detail::compare_paired(o, v, ref));
     for (const auto& c : bilayer_curves()) keep(detail::compare_curve(c, v, ref, {}, NAN));
     return;
   }
@@ -350,23 +350,6 @@ double curve_error(const std::vector<double>& curve, const std::vector<double>& 
   return n ? s / double(n) : NAN;
 }
 
-const std::vector<BilayerObservable>& bilayer_observables() {
-  static const std::vector<BilayerObservable> obs = {
-      {"temperature", "T", "kinetic temperature k_BT", "k_BT"},
-      {"temperature_x", "T_x", "kinetic temperature of the x components", "k_BT"},
-      {"temperature_y", "T_y", "kinetic temperature of the y components", "k_BT"},
-      {"temperature_z", "T_z", "kinetic temperature of the z components (normal to the membrane)", "k_BT"},
-      {"pressure_xx", "P_xx", "pressure tensor P_xx", "k_BT/r_c³"},
-      {"pressure_yy", "P_yy", "pressure tensor P_yy", "k_BT/r_c³"},
-      {"pressure_zz", "P_zz", "pressure tensor P_zz (normal to the membrane)", "k_BT/r_c³"},
-      {"pressure_xx_minus_yy", "P_xx − P_yy", "in-plane anisotropy P_xx − P_yy (0 by symmetry about z)", "k_BT/r_c³"},
-      {"tension", "Σ", "tension L_z[P_zz − (P_xx+P_yy)/2]", "k_BT/r_c²"},
-      {"thickness", "thickness", "head-density peak to peak", "r_c"},
-      {"tail_order", "order", "tail order P2 against z", "1"},
-  };
-  return obs;
-}
-
 ReplicaMean replica_mean(const std::vector<const CellResult*>& cells, const std::string& name,
                          const std::string& sem_name) {
   ReplicaMean r;
@@ -511,7 +494,7 @@ TemperatureLimit temperature_limit(const Analysis& a, double power) {
     if (v.key.reference || v.tests == 0) continue;
     const std::size_t m = a.error_control == ErrorControl::study ? a.family_size : v.tests;
     for (const auto& c : v.observables) {
-      if (c.observable != "temperature_mean" && c.observable != "temperature") continue;
+      if (!is_kinetic_temperature(c.observable)) continue;
       // Paired (bilayer) comparisons keep absolute errors: relative to the reference's temperature here.
       const double se = c.paired ? c.sigma / std::abs(c.ref) : c.sigma;
       const double d = stats::detectable_difference(se, c.dof, a.alpha / double(m), power);

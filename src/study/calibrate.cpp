@@ -15,6 +15,7 @@
 #include "dpdrng/rng/registry.hpp"
 #include "dpdrng/stats/binomial.hpp"
 #include "dpdrng/study/analysis.hpp"
+#include "dpdrng/study/observables.hpp"
 #include "calibrate_common.hpp"
 
 namespace dpdrng::study {
@@ -129,12 +130,12 @@ NullRow null_row(const StudyConfig& pool, const std::vector<CellResult>& cells, 
 double temperature_error(const std::vector<CellResult>& cells, const std::string& generator) {
   std::map<int, double> ref;
   for (const auto& c : cells)
-    if (c.cell.reference && c.status == CellStatus::ok) ref[c.cell.replica] = c.scalar("temperature_mean", NAN);
+    if (c.cell.reference && c.status == CellStatus::ok) ref[c.cell.replica] = c.scalar(kinetic_temperature().key, NAN);
   double s = 0;
   std::size_t n = 0;
   for (const auto& c : cells) {
     if (c.cell.generator != generator || c.status != CellStatus::ok || !ref.count(c.cell.replica)) continue;
-    const double t = c.scalar("temperature_mean", NAN), r = ref[c.cell.replica];
+    const double t = c.scalar(kinetic_temperature().key, NAN), r = ref[c.cell.replica];
     if (std::isfinite(t) && std::isfinite(r) && r != 0) s += (t - r) / r, ++n;
   }
   return n ? s / double(n) : NAN;

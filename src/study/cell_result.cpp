@@ -1,11 +1,45 @@
 #include "dpdrng/study/cell_result.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "dpdrng/common/numbers.hpp"
+#include "dpdrng/study/observables.hpp"
 
 namespace dpdrng::study {
-namespace {
+namespace cell_record {
+
+// A number stored as an integer must come back as the same double: whole, within 2^53, and not −0.
+bool whole(double v) {
+  return std::isfinite(v) && v == std::trunc(v) && std::abs(v) <= 9007199254740992.0 && !(v == 0 && std::signbit(v));
+}
+
+bool all_whole(const std::vector<double>& v) {
+  return std::all_of(v.begin(), v.end(), [](double x) { return whole(x); });
+}
+
+// A count as an integer; any other number, or a count that is not a whole number (NaN where it could not be
+// counted), as a double.
+h5::Attribute number(const std::string& key, double v) {
+  if (is_count(key) && whole(v)) return static_cast<std::int64_t>(v);
+  return v;
+}
+
+// A dataset of numbers with its unit, integers when it is a count.
+void write_numbers(hid_t g, const std::string& key, const h5::Matrix& m) {
+  h5::write_matrix(g, key, m, is_count(key) && all_whole(m.data));
+  if (const std::string unit = unit_of(key); !unit.empty()) h5::write_attribute(g, key, "unit", unit);
+}
+
+// Seeds are unsigned 64-bit integers; a record may hold one as its decimal text.
+std::uint64_t read_seed(const std::map<std::string, h5::Attribute>& a) {
+  const auto it = a.find("cell.seed");
+  if (it == a.end()) throw std::runtime_error("cell record lacks attribute cell.seed");
+  if (const auto* u = std::get_if<std::uint64_t>(&it->second)) return *u;
+  if (const auto* s = std::get_if<std::string>(&it->second)) return parse_number<std::uint64_t>(*s, "cell.seed");
+  throw std::runtime_error("cell record attribute cell.seed has the wrong type");
+}
 
 // Scalars with '/' in their name stay flat attributes on the cell group: one place to read them all.
 void read_datasets(hid_t group, const std::string& prefix, CellResult& r) {
@@ -45,7 +79,7 @@ rng::Seeding read_seeding(const std::string& text, bool reference) {
   return reference ? rng::Seeding::distance : rng::parse_seeding(text);
 }
 
-}  // namespace
+}  // namespace cell_record
 
 std::string_view to_string(CellStatus s) {
   switch (s) {
@@ -80,8 +114,7 @@ void write_cell(hid_t g, const CellResult& r) {
   h5::write_attribute(g, "cell.replica", std::int64_t{c.replica});
   h5::write_attribute(g, "cell.reference", std::int64_t{c.reference});
   h5::write_attribute(g, "cell.nist", std::int64_t{c.nist});
-  // As a string: HDF5 has a uint64 type but h5dump users compare seeds by eye, and int64 would wrap.
-  h5::write_attribute(g, "cell.seed", std::to_string(c.seed));
+  h5::write_attribute(g, "cell.seed", c.seed);
   h5::write_attribute(g, "status", std::string(to_string(r.status)));
   h5::write_attribute(g, "unstable_step", std::int64_t{r.unstable_step});
   h5::write_attribute(g, "reason", r.reason);
@@ -91,15 +124,16 @@ void write_cell(hid_t g, const CellResult& r) {
     if (k.empty() || k.rfind("cell.", 0) == 0 || k.rfind("note.", 0) == 0 || k == "status" || k == "unstable_step" ||
         k == "reason" || k == "seconds")
       throw std::invalid_argument("cell scalar name '" + k + "' is empty or reserved");
-    h5::write_attribute(g, k, v);
+    h5::write_attribute(g, k, cell_record::number(k, v));
   }
   for (const auto& [k, v] : r.notes) h5::write_attribute(g, "note." + k, v);
-  for (const auto& [k, v] : r.series) h5::write_series(g, k, v);
-  for (const auto& [k, v] : r.matrices) h5::write_matrix(g, k, v);
+  for (const auto& [k, v] : r.series) cell_record::write_numbers(g, k, h5::Matrix{v.size(), 0, v});
+  for (const auto& [k, v] : r.matrices) cell_record::write_numbers(g, k, v);
   for (const auto& [k, v] : r.strings) h5::write_strings(g, k, v);
 }
 
 CellResult read_cell(hid_t g) {
+  using namespace cell_record;
   const auto a = h5::read_attributes(g);
   CellResult r;
   Cell& c = r.cell;
@@ -115,7 +149,7 @@ CellResult read_cell(hid_t g) {
   c.reference = get<std::int64_t>(a, "cell.reference") != 0;
   c.seeding = read_seeding(get<std::string>(a, "cell.seeding"), c.reference);
   c.nist = get<std::int64_t>(a, "cell.nist") != 0;
-  c.seed = parse_number<std::uint64_t>(get<std::string>(a, "cell.seed"), "cell.seed");
+  c.seed = cell_record::read_seed(a);
   r.status = parse_cell_status(get<std::string>(a, "status"));
   r.unstable_step = static_cast<long>(get<std::int64_t>(a, "unstable_step"));
   r.reason = get<std::string>(a, "reason");
@@ -128,6 +162,8 @@ CellResult read_cell(hid_t g) {
       r.scalars[k] = *d;
     } else if (const auto* i = std::get_if<std::int64_t>(&v)) {
       r.scalars[k] = static_cast<double>(*i);
+    } else if (const auto* u = std::get_if<std::uint64_t>(&v)) {
+      r.scalars[k] = static_cast<double>(*u);
     }
   }
   read_datasets(g, "", r);

@@ -167,7 +167,7 @@ Comparison compare_scalar(const ScalarSpec& spec, const VariantReport& v, const 
                           const ReferencePool& pool, double margin) {
   Comparison c;
   c.observable = spec.name;
-  const auto x = values_of(v.cells, spec.name), y = values_of(ref.cells, spec.name);
+  const auto x = values_of(v.cells, spec.key), y = values_of(ref.cells, spec.key);
   if (!describe(c, x, y)) return c;
   const double scale = std::abs(c.ref);
   if (!(scale > 0)) {
@@ -176,20 +176,20 @@ Comparison compare_scalar(const ScalarSpec& spec, const VariantReport& v, const 
     return c;
   }
   c.error_rate = std::abs(c.value - c.ref) / scale;
-  const stats::TTest t = stats::pooled_t(x, y, pool_spreads(pool, spec.name));
+  const stats::TTest t = stats::pooled_t(x, y, pool_spreads(pool, spec.key));
   set_test(c, t, "t", scale);
   set_shift(c, t.diff / scale, t.ci_half_width(0.95) / scale);
   c.margin = margin;
   c.equivalence.p = stats::equivalence_p(c.shift, c.sigma, t.dof, margin);
   c.score = stats::normal_score(t.t, t.dof);
-  c.score_runs = runs_score(v.cells, ref.cells, spec.name, spec.sem, t.diff);
+  c.score_runs = runs_score(v.cells, ref.cells, spec.key, spec.sem, t.diff);
   return c;
 }
 
-Comparison compare_paired(const std::string& base, const VariantReport& v, const VariantReport& ref) {
+Comparison compare_paired(const Observable& o, const VariantReport& v, const VariantReport& ref) {
   Comparison c;
-  c.observable = base;
-  const std::string name = base + "_mean", sem = base + "_sem";
+  c.observable = o.name;
+  const std::string name = o.key, sem = o.sem;
   if (!describe(c, values_of(v.cells, name), values_of(ref.cells, name))) return c;
   c.paired = true;
   c.error_rate = std::abs(c.value - c.ref);
@@ -252,8 +252,8 @@ Comparison compare_curve(const CurveSpec& spec, const VariantReport& v, const Va
   c.observable = spec.name;
   c.test = "F";
   std::size_t len = 0;
-  const auto y = curves_of(ref.cells, spec.series, len);
-  const auto x = curves_of(v.cells, spec.series, len);
+  const auto y = curves_of(ref.cells, spec.key, len);
+  const auto x = curves_of(v.cells, spec.key, len);
   c.n = x.size();
   c.n_ref = y.size();
   if (x.empty() || y.empty()) {
@@ -284,7 +284,7 @@ Comparison compare_curve(const CurveSpec& spec, const VariantReport& v, const Va
   c.dof2 = t.dof2;
   c.decision.p = t.p_value;
   std::vector<stats::Curves> pool_curves;
-  for (const auto* r : pool) pool_curves.push_back(curves_of(r->cells, spec.series, len));
+  for (const auto* r : pool) pool_curves.push_back(curves_of(r->cells, spec.key, len));
   bin_shifts(c, x, y, pool_curves, bins, my, margin);
   if (!std::isfinite(t.p_value)) c.note = "too few replicas for a P-value";
   return c;

@@ -19,8 +19,8 @@ using ReferencePool = std::vector<const VariantReport*>;
 // compared replicas vary more than it does).
 Comparison compare_scalar(const ScalarSpec& spec, const VariantReport& v, const VariantReport& ref,
                           const ReferencePool& pool, double margin);
-// The bilayer's: paired t-test replica by replica on <base>_mean, the runs' own <base>_sem pooled in.
-Comparison compare_paired(const std::string& base, const VariantReport& v, const VariantReport& ref);
+// The bilayer's: paired t-test replica by replica on the observable's key, the runs' own standard errors pooled in.
+Comparison compare_paired(const Observable& o, const VariantReport& v, const VariantReport& ref);
 // The L² F test of the replicas' curves (stats::curve_test), its effective number of bins from the runs'
 // leave-one-block-out curves where the cells hold them. Equivalence is the intersection of every kept bin's
 // equivalence test at `margin` on its relative difference (each bin a Student t of the replicas): the curves are

@@ -45,7 +45,7 @@ void progress_line(std::ostream& o, std::size_t done, std::size_t total, const D
 
 }  // namespace
 
-DecompRunSummary run_decomp_sweep(const DecompSweep& sw, DecompStore& store, const DecompRunOptions& options) {
+DecompRunSummary run_decomp_sweep(const DecompSweep& sw, const CellStore& store, const DecompRunOptions& options) {
   using clock = std::chrono::steady_clock;
   const auto t0 = clock::now();
   DecompRunSummary sum;
@@ -55,13 +55,13 @@ DecompRunSummary run_decomp_sweep(const DecompSweep& sw, DecompStore& store, con
     if (!in_shard(i, options.shard)) continue;
     ++sum.cells;
     std::string why;
-    switch (store.state(cells[i], &why)) {
-      case DecompStore::State::stored: ++sum.resumed; break;
-      case DecompStore::State::missing: todo.push_back(cells[i]); break;
-      case DecompStore::State::unreadable:
-        sum.unreadable.push_back(store.cell_path(cells[i]).string());
+    switch (decomp_cell_state(store, cells[i], &why)) {
+      case CellStore::State::stored: ++sum.resumed; break;
+      case CellStore::State::missing: todo.push_back(cells[i]); break;
+      case CellStore::State::unreadable:
+        sum.unreadable.push_back(store.cell_path(cells[i].id()).string());
         if (options.progress)
-          *options.progress << "[decompose] warning: " << store.cell_path(cells[i]).string() << " is unreadable ("
+          *options.progress << "[decompose] warning: " << store.cell_path(cells[i].id()).string() << " is unreadable ("
                             << why << "): computing the cell again\n";
         todo.push_back(cells[i]);
         break;
@@ -73,7 +73,7 @@ DecompRunSummary run_decomp_sweep(const DecompSweep& sw, DecompStore& store, con
   for (const auto& cell : todo) {
     const auto c0 = clock::now();
     const std::vector<DecompResult> rows = run_decomp_cell(sw, cell);
-    store.save(cell, rows);
+    save_decomp_cell(store, cell, rows);
     const double seconds = std::chrono::duration<double>(clock::now() - c0).count();
     busy += seconds;
     ++sum.computed;
@@ -85,15 +85,15 @@ DecompRunSummary run_decomp_sweep(const DecompSweep& sw, DecompStore& store, con
   return sum;
 }
 
-std::vector<DecompResult> load_decomp_rows(const DecompSweep& sw, const DecompStore& store,
+std::vector<DecompResult> load_decomp_rows(const DecompSweep& sw, const CellStore& store,
                                            std::vector<std::string>* missing) {
   std::vector<DecompResult> rows;
   for (const auto& cell : decomp_cells(sw)) {
-    if (store.state(cell) != DecompStore::State::stored) {
+    if (decomp_cell_state(store, cell) != CellStore::State::stored) {
       if (missing) missing->push_back(cell.id());
       continue;
     }
-    for (auto& r : store.load(cell)) rows.push_back(std::move(r));
+    for (auto& r : load_decomp_cell(store, cell)) rows.push_back(std::move(r));
   }
   return rows;
 }

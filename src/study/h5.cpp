@@ -55,9 +55,15 @@ herr_t collect_attr(hid_t obj, const char* name, const H5A_info_t*, void* data) 
         break;
       }
       case H5T_INTEGER: {
-        std::int64_t v = 0;
-        check(H5Aread(a.id(), H5T_NATIVE_INT64, &v), "read attribute");
-        out[name] = v;
+        if (H5Tget_sign(t.id()) == H5T_SGN_NONE && H5Tget_size(t.id()) == 8) {
+          std::uint64_t v = 0;
+          check(H5Aread(a.id(), H5T_NATIVE_UINT64, &v), "read attribute");
+          out[name] = v;
+        } else {
+          std::int64_t v = 0;
+          check(H5Aread(a.id(), H5T_NATIVE_INT64, &v), "read attribute");
+          out[name] = v;
+        }
         break;
       }
       case H5T_STRING: out[name] = read_string_attr(a.id(), t.id()); break;
@@ -158,6 +164,10 @@ void write_attribute(hid_t obj, const std::string& name, const Attribute& value)
     Handle a(H5Acreate2(obj, name.c_str(), H5T_STD_I64LE, space.id(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose,
              "attribute " + name);
     check(H5Awrite(a.id(), H5T_NATIVE_INT64, i), "write attribute " + name);
+  } else if (const auto* u = std::get_if<std::uint64_t>(&value)) {
+    Handle a(H5Acreate2(obj, name.c_str(), H5T_STD_U64LE, space.id(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose,
+             "attribute " + name);
+    check(H5Awrite(a.id(), H5T_NATIVE_UINT64, u), "write attribute " + name);
   } else {
     Handle t = vlen_string_type();
     Handle a(H5Acreate2(obj, name.c_str(), t.id(), space.id(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose,
@@ -174,11 +184,21 @@ std::map<std::string, Attribute> read_attributes(hid_t obj) {
   return out;
 }
 
-void write_series(hid_t group, const std::string& name, const std::vector<double>& values) {
-  write_matrix(group, name, Matrix{values.size(), 0, values});
+void write_attribute(hid_t parent, const std::string& name, const std::string& attribute, const Attribute& value) {
+  Handle o(H5Oopen(parent, name.c_str(), H5P_DEFAULT), H5Oclose, "open " + name);
+  write_attribute(o.id(), attribute, value);
 }
 
-void write_matrix(hid_t group, const std::string& name, const Matrix& m) {
+std::map<std::string, Attribute> read_attributes(hid_t parent, const std::string& name) {
+  Handle o(H5Oopen(parent, name.c_str(), H5P_DEFAULT), H5Oclose, "open " + name);
+  return read_attributes(o.id());
+}
+
+void write_series(hid_t group, const std::string& name, const std::vector<double>& values, bool integer) {
+  write_matrix(group, name, Matrix{values.size(), 0, values}, integer);
+}
+
+void write_matrix(hid_t group, const std::string& name, const Matrix& m, bool integer) {
   // cols == 0 marks a 1-D series.
   const int rank = m.cols == 0 ? 1 : 2;
   const hsize_t dims[2] = {m.rows, m.cols};
@@ -186,10 +206,16 @@ void write_matrix(hid_t group, const std::string& name, const Matrix& m) {
     throw std::runtime_error("dataset " + name + ": shape does not match its data");
   Handle space(H5Screate_simple(rank, dims, nullptr), H5Sclose, "dataspace " + name);
   Handle lcpl = link_creation_plist();
-  Handle d(H5Dcreate2(group, name.c_str(), H5T_IEEE_F64LE, space.id(), lcpl.id(), H5P_DEFAULT, H5P_DEFAULT),
+  Handle d(H5Dcreate2(group, name.c_str(), integer ? H5T_STD_I64LE : H5T_IEEE_F64LE, space.id(), lcpl.id(),
+                      H5P_DEFAULT, H5P_DEFAULT),
            H5Dclose, "create dataset " + name);
-  if (!m.data.empty())
+  if (m.data.empty()) return;
+  if (integer) {
+    const std::vector<std::int64_t> whole(m.data.begin(), m.data.end());
+    check(H5Dwrite(d.id(), H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, whole.data()), "write " + name);
+  } else {
     check(H5Dwrite(d.id(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, m.data.data()), "write " + name);
+  }
 }
 
 void write_strings(hid_t group, const std::string& name, const std::vector<std::string>& values) {

@@ -8,6 +8,7 @@
 #include "dpdrng/rng/registry.hpp"
 #include "dpdrng/stats/moments.hpp"
 #include "dpdrng/study/measure.hpp"
+#include "dpdrng/study/observables.hpp"
 #include "measure_common.hpp"
 
 namespace dpdrng::study {
@@ -194,12 +195,16 @@ void record_run(const dpd::RunResult& r, CellResult& out) {
     sc["zeta_skewness"] = m.skewness;
     sc["zeta_excess_kurtosis"] = m.kurtosis;
   }
-  sc["temperature_mean"] = r.temperature.mean;
-  sc["temperature_std"] = r.temperature.std;
-  sc["temperature_std_sem"] = r.temperature.std_sem;
-  sc["temperature_std_sem_dof"] = r.temperature.std_sem_dof;
-  sc["temperature_sem"] = r.temperature.sem;
-  sc["temperature_sem_dof"] = r.temperature.sem_dof;
+  // The kinetic temperature and its fluctuation under the observable table's names; each standard error's
+  // degrees of freedom beside it.
+  const Observable& kinetic = kinetic_temperature();
+  const Observable& fluctuation = observable_row("temperature_std");
+  sc[kinetic.key] = r.temperature.mean;
+  sc[kinetic.sem] = r.temperature.sem;
+  sc[std::string(kinetic.sem) + "_dof"] = r.temperature.sem_dof;
+  sc[fluctuation.key] = r.temperature.std;
+  sc[fluctuation.sem] = r.temperature.std_sem;
+  sc[std::string(fluctuation.sem) + "_dof"] = r.temperature.std_sem_dof;
   sc["pressure_mean"] = r.pressure.mean;
   sc["pressure_sem"] = r.pressure.sem;
   sc["pressure_sem_dof"] = r.pressure.sem_dof;

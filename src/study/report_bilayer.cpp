@@ -41,7 +41,7 @@ std::string bilayer_table_markdown(const Analysis& a, const std::string& distrib
     o << "| " << v.key.label_and_seeding() << " | " << v.cells.size() << (v.broken.empty() ? "" : " (+" + std::to_string(v.broken.size()) + " broken)")
       << " |";
     for (const auto& b : bilayer_observables())
-      o << ' ' << with_ci(replica_mean(v.cells, std::string(b.name) + "_mean", std::string(b.name) + "_sem")) << " |";
+      o << ' ' << with_ci(replica_mean(v.cells, b.key, b.sem)) << " |";
     o << '\n';
   }
   return o.str();
@@ -52,7 +52,7 @@ std::string bilayer_table_csv(const Analysis& a) {
   o << "generator,rounds,distribution,seeding,dt,observable,replicas,mean,ci95,ci_from_run_sem\n";
   for (const auto& v : a.variants)
     for (const auto& b : bilayer_observables()) {
-      const ReplicaMean m = replica_mean(v.cells, std::string(b.name) + "_mean", std::string(b.name) + "_sem");
+      const ReplicaMean m = replica_mean(v.cells, b.key, b.sem);
       o << v.key.generator << ',' << v.key.rounds << ',' << v.key.noise() << ','
         << v.key.seeding_name() << ',' << detail::num(v.key.dt) << ',' << b.name << ','
         << m.n << ',' << detail::num(m.mean) << ',' << detail::num(m.ci95) << ',' << int(m.from_run_sem) << '\n';

@@ -56,7 +56,7 @@ Chart observable(const std::vector<const VariantReport*>& vs, const BilayerObser
           Axis{o.label, o.unit}, {"position", "mean", "ci95"}};
   c.key = "off";
   Line l{"replica mean ± 95 % CI", "using 2:3:4:xtic(5) with yerrorbars pt 7 ps 1.5 lw 2", {}, {}};
-  const std::string mean = std::string(o.name) + "_mean", sem = std::string(o.name) + "_sem";
+  const std::string mean = o.key, sem = o.sem;
   for (const auto* v : vs) {
     const ReplicaMean m = replica_mean(v->cells, mean, sem);
     if (m.n == 0) continue;

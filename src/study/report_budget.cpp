@@ -15,34 +15,6 @@ namespace {
 using detail::fmt;
 using detail::num;
 
-struct BudgetTarget {
-  const char* observable;  // the comparison's name
-  const char* mean;        // the cell scalar
-  const char* sem;         // its run error (one replica's interval)
-  bool temperature;        // target k_BT, errors as fractions of it; otherwise target 0, absolute
-};
-
-const std::vector<BudgetTarget>& water_targets() {
-  static const std::vector<BudgetTarget> t = {
-      {"temperature_mean", "temperature_mean", "temperature_sem", true},
-      {"temperature_conf_mean", "temperature_conf_mean", "temperature_conf_sem", true},
-      {"temperature_x_mean", "temperature_x_mean", "temperature_x_sem", true},
-      {"temperature_y_mean", "temperature_y_mean", "temperature_y_sem", true},
-      {"temperature_z_mean", "temperature_z_mean", "temperature_z_sem", true},
-  };
-  return t;
-}
-
-const std::vector<BudgetTarget>& bilayer_targets() {
-  static const std::vector<BudgetTarget> t = {
-      {"temperature", "temperature_mean", "temperature_sem", true},
-      {"temperature_x", "temperature_x_mean", "temperature_x_sem", true},
-      {"temperature_y", "temperature_y_mean", "temperature_y_sem", true},
-      {"temperature_z", "temperature_z_mean", "temperature_z_sem", true},
-      {"pressure_xx_minus_yy", "pressure_xx_minus_yy_mean", "pressure_xx_minus_yy_sem", false},
-  };
-  return t;
-}
 
 const Comparison* budget_comparison(const VariantReport& v, const std::string& name) {
   for (const auto& c : v.observables)
@@ -78,21 +50,23 @@ std::vector<BudgetRow> error_budget(const Analysis& a, double kT) {
     if (v.key.reference || v.cells.empty()) continue;
     const VariantReport* ref = a.reference_for(v.key);
     if (!ref) continue;
-    for (const auto& t : a.bilayer ? bilayer_targets() : water_targets()) {
-      const Comparison* c = budget_comparison(v, t.observable);
+    for (const auto& t : budget_observables(a.bilayer ? kBilayer : kWater)) {
+      const Comparison* c = budget_comparison(v, t.name);
       if (!c) continue;
+      // Errors against k_BT as fractions of it; against 0, absolute.
+      const bool temperature = t.budget == BudgetTarget::kT;
       BudgetRow r;
       r.variant = &v;
-      r.observable = t.observable;
-      r.relative = t.temperature;
-      r.target = t.temperature ? kT : 0.0;
-      const double scale = t.temperature ? kT : 1.0;
+      r.observable = t.name;
+      r.relative = temperature;
+      r.target = temperature ? kT : 0.0;
+      const double scale = temperature ? kT : 1.0;
       // The comparison's shift back on the observable's own scale (water's are relative to the reference's
       // mean), so that noise + integrator = variant − target.
       const double to_abs = c->relative ? std::abs(c->ref) : 1.0;
       r.noise = {c->shift * to_abs / scale, c->ci_low * to_abs / scale, c->ci_high * to_abs / scale};
-      r.integrator = budget_against_target(replica_mean(ref->cells, t.mean, t.sem), r.target, scale);
-      r.total = budget_against_target(replica_mean(v.cells, t.mean, t.sem), r.target, scale);
+      r.integrator = budget_against_target(replica_mean(ref->cells, t.key, t.sem), r.target, scale);
+      r.total = budget_against_target(replica_mean(v.cells, t.key, t.sem), r.target, scale);
       rows.push_back(r);
     }
   }

@@ -10,6 +10,7 @@
 
 #include "dpdrng/stats/summary.hpp"
 #include "dpdrng/study/report.hpp"
+#include "dpdrng/study/observables.hpp"
 #include "report_chart.hpp"
 #include "report_common.hpp"
 
@@ -46,7 +47,7 @@ const VariantReport* reference(const Analysis& a, const std::string& dist) {
 
 const Comparison* temperature(const VariantReport& v) {
   for (const auto& c : v.observables)
-    if (c.observable == "temperature_mean" && c.available && std::isfinite(c.shift)) return &c;
+    if (c.observable == kinetic_temperature().name && c.available && std::isfinite(c.shift)) return &c;
   return nullptr;
 }
 

@@ -247,7 +247,7 @@ const Comparison* find_observable(const VariantReport& v, const std::string& nam
 
 // The measured shift of k_BT against the reference, (T − T_MT) / T_MT, and its 1σ (the comparison's).
 std::string measured_shift(const VariantReport& v) {
-  const Comparison* t = find_observable(v, "temperature_mean");
+  const Comparison* t = find_observable(v, kinetic_temperature().name);
   if (!t || !(t->ref != 0)) return "–";
   const std::string b = t->decision.differs ? "**" : "";
   std::string s = b + fmt("%+.2f %%", 100 * (t->value - t->ref) / t->ref) + b;
@@ -326,8 +326,9 @@ struct MeasuredShift {
   double shift = NAN, sigma = NAN, ci_low = NAN, ci_high = NAN;
 };
 MeasuredShift measured_temperature_shift(const VariantReport& v) {
-  const Comparison* t = find_observable(v, "temperature_mean");
-  if (!t) t = find_observable(v, "temperature");
+  const Comparison* t = nullptr;
+  for (const auto& c : v.observables)
+    if (!t && c.available && is_kinetic_temperature(c.observable)) t = &c;
   if (!t || !(t->ref != 0)) return {};
   const double scale = t->relative ? 1.0 : std::abs(t->ref);
   return {(t->value - t->ref) / t->ref, t->sigma / scale, t->ci_low / scale, t->ci_high / scale};

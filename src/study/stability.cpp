@@ -9,6 +9,7 @@
 #include "dpdrng/common/numbers.hpp"
 #include "dpdrng/stats/mean_tests.hpp"
 #include "dpdrng/stats/summary.hpp"
+#include "dpdrng/study/observables.hpp"
 #include "report_chart.hpp"
 
 namespace dpdrng::study {
@@ -46,7 +47,8 @@ void reference_of(const std::vector<CellResult>& cells, StabilityAnalysis& a) {
 }
 
 void accuracy_of(const std::vector<const CellResult*>& ok, const StabilityAnalysis& a, StabilityPoint& p) {
-  const ReplicaMean t = replica_mean(ok, "temperature_mean", "temperature_sem");
+  const Observable& kinetic = kinetic_temperature();
+  const ReplicaMean t = replica_mean(ok, kinetic.key, kinetic.sem);
   p.temperature = t.mean, p.temperature_ci = t.ci95;
   p.temperature_error = std::abs(t.mean - 1.0);
   const ReplicaMean tc = replica_mean(ok, "temperature_conf_mean", "temperature_conf_sem");
@@ -87,8 +89,9 @@ double pooled_half_width(const std::vector<double>& own, const std::vector<std::
 
 // Each point's k_BT and T_conf CIs under the pooled model (`oks`: each point's stable cells, in point order).
 void pool_cis(StabilityAnalysis& a, const std::vector<std::vector<const CellResult*>>& oks) {
-  for (const char* name : {"temperature_mean", "temperature_conf_mean"}) {
-    const bool conf = std::string(name) == "temperature_conf_mean";
+  for (const Observable* o : {&kinetic_temperature(), &observable_row("temperature_conf_mean")}) {
+    const char* name = o->key;
+    const bool conf = o != &kinetic_temperature();
     for (std::size_t k = 0; k < a.points.size(); ++k) {
       StabilityPoint& p = a.points[k];
       if (oks[k].empty()) continue;

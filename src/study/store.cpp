@@ -8,11 +8,21 @@
 
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/common/output.hpp"
+#include "dpdrng/study/observables.hpp"
 #include "dpdrng/version.hpp"
 
 namespace dpdrng::study {
 namespace fs = std::filesystem;
-namespace {
+
+std::string read_whole_file(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot open it");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+namespace store_files {
 
 std::string read_text(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -20,16 +30,6 @@ std::string read_text(const fs::path& p) {
   std::ostringstream s;
   s << in.rdbuf();
   return s.str();
-}
-
-// The cell files present (hidden temporaries left by a killed run excluded), in name order.
-std::vector<fs::path> cell_files(const fs::path& dir) {
-  std::vector<fs::path> files;
-  if (fs::exists(dir / "cells"))
-    for (const auto& e : fs::directory_iterator(dir / "cells"))
-      if (e.path().extension() == ".h5" && e.path().filename().string()[0] != '.') files.push_back(e.path());
-  std::sort(files.begin(), files.end());
-  return files;
 }
 
 // Every cell file starts with a 512-byte HDF5 user block holding a checksum of the rest, written after HDF5 has
@@ -67,9 +67,9 @@ void check_seal(const fs::path& p) {
                              "written)");
 }
 
-// Reads a whole cell file, checking its checksum and that it belongs to the config with `hash`; throws with the
+// Opens a cell file after checking its checksum and that it belongs to the config with `hash`; throws with the
 // reason.
-CellResult read_cell_file(const fs::path& p, const std::string& hash) {
+h5::Handle open_cell_file(const fs::path& p, const std::string& hash) {
   check_seal(p);
   h5::Handle f = h5::open_file(p.string());
   const auto attrs = h5::read_attributes(f.id());
@@ -77,21 +77,24 @@ CellResult read_cell_file(const fs::path& p, const std::string& hash) {
   const std::string* stored = it == attrs.end() ? nullptr : std::get_if<std::string>(&it->second);
   if (!stored) throw std::runtime_error("no config_hash attribute");
   if (*stored != hash) throw std::runtime_error("written by another config (hash " + *stored + ")");
+  return f;
+}
+
+// A checked cell file whose record `read` has read whole, open for copying; throws with the reason.
+h5::Handle open_record(const fs::path& p, const std::string& hash, const CellStore::Reader& read) {
+  h5::Handle f = open_cell_file(p, hash);
   h5::Handle g = h5::open_group(f.id(), "cell");
-  return read_cell(g.id());
+  const std::string held = read(g.id());
+  if (held != p.stem().string()) throw std::runtime_error("holds cell " + held);
+  return f;
 }
 
-}  // namespace
-
-std::string read_whole_file(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot open it");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+// The unit of every number among a record's attributes (its datasets carry their own).
+void collect_units(hid_t cell, std::map<std::string, std::string>& units) {
+  for (const auto& [name, value] : h5::read_attributes(cell))
+    if (!std::holds_alternative<std::string>(value))
+      if (const std::string u = unit_of(name); !u.empty()) units[name] = u;
 }
-
-fs::path Store::cell_path(const Cell& cell) const { return dir_ / "cells" / (cell.id() + ".h5"); }
 
 std::string read_store_hash(const fs::path& dir) {
   const fs::path p = dir / "config.hash";
@@ -101,44 +104,40 @@ std::string read_store_hash(const fs::path& dir) {
   return h;
 }
 
-void open_store_directory(const fs::path& dir, const std::string& config_file, const std::string& source_text,
-                          const std::string& hash) {
-  const std::string existing = read_store_hash(dir);
+}  // namespace store_files
+
+std::string CellStore::hash() const { return store_files::read_store_hash(dir_); }
+
+void CellStore::open(const std::string& config_file, const std::string& source_text, const std::string& hash) const {
+  const std::string existing = this->hash();
   if (!existing.empty() && existing != hash)
-    throw InputError(dir.string() + " holds results of a different config (hash " + existing + ", this config " +
+    throw InputError(dir_.string() + " holds results of a different config (hash " + existing + ", this config " +
                      hash + "): choose another --out, or delete the directory to start afresh");
-  fs::create_directories(dir / "cells");
+  fs::create_directories(dir_ / "cells");
   if (existing.empty()) {
-    write_file_atomically(dir / config_file, source_text);
-    write_file_atomically(dir / "config.hash", hash + "\n");
+    write_file_atomically(dir_ / config_file, source_text);
+    write_file_atomically(dir_ / "config.hash", hash + "\n");
   }
 }
 
-std::string Store::stored_hash() const { return read_store_hash(dir_); }
-
-void Store::open_for(const StudyConfig& config) {
-  open_store_directory(dir_, "study.toml", config.source_text, config.hash);
+std::vector<fs::path> CellStore::files() const {
+  std::vector<fs::path> files;
+  if (fs::exists(dir_ / "cells"))
+    for (const auto& e : fs::directory_iterator(dir_ / "cells"))
+      if (e.path().extension() == ".h5" && e.path().filename().string()[0] != '.') files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  return files;
 }
 
-StudyConfig Store::stored_config() const {
-  const fs::path p = dir_ / "study.toml";
-  if (!fs::exists(p)) throw InputError(dir_.string() + " is not a study directory (no study.toml)");
-  StudyConfig c = parse_config(read_text(p), p.string());
-  const std::string h = stored_hash();
-  if (!h.empty() && h != c.hash)
-    throw InputError(p.string() + " does not match " + (dir_ / "config.hash").string() +
-                     " (edited after the run?)");
-  return c;
-}
+void CellStore::read(const fs::path& p, const Reader& read) const { store_files::open_record(p, hash(), read); }
 
-Store::State Store::state(const Cell& cell, std::string* reason) const {
-  const fs::path p = cell_path(cell);
+CellStore::State CellStore::state(const std::string& id, const Reader& read, std::string* reason) const {
+  const fs::path p = cell_path(id);
   if (!fs::exists(p)) return State::missing;
   // The whole record is read: a file cut short by hand or a full disk must not pass for a finished cell.
   try {
     std::lock_guard lk(h5::lock());
-    const CellResult r = read_cell_file(p, stored_hash());
-    if (r.cell.id() != cell.id()) throw std::runtime_error("holds cell " + r.cell.id());
+    this->read(p, read);
     return State::stored;
   } catch (const std::exception& e) {
     if (reason) *reason = e.what();
@@ -146,17 +145,17 @@ Store::State Store::state(const Cell& cell, std::string* reason) const {
   }
 }
 
-void Store::save(const CellResult& r) {
-  const fs::path p = cell_path(r.cell);
+void CellStore::save(const std::string& id, const Writer& write) const {
+  const fs::path p = cell_path(id);
   std::string bytes;
   try {
     std::lock_guard lk(h5::lock());
-    h5::Handle f = h5::create_memory_file(kSealBytes);
-    h5::write_attribute(f.id(), "config_hash", stored_hash());
+    h5::Handle f = h5::create_memory_file(store_files::kSealBytes);
+    h5::write_attribute(f.id(), "config_hash", hash());
     h5::Handle g = h5::create_group(f.id(), "cell");
-    write_cell(g.id(), r);
+    write(g.id());
     bytes = h5::image(f.id());
-    seal_image(bytes);
+    store_files::seal_image(bytes);
   } catch (const std::invalid_argument&) {
     throw;
   } catch (const std::runtime_error& e) {
@@ -166,86 +165,50 @@ void Store::save(const CellResult& r) {
   write_file_atomically(p, bytes);
 }
 
-CellResult Store::load(const Cell& cell) const {
-  std::lock_guard lk(h5::lock());
-  return read_cell_file(cell_path(cell), stored_hash());
-}
-
-std::vector<CellResult> Store::load_all(std::vector<UnreadableCell>* unreadable) const {
-  std::vector<CellResult> out;
-  const std::string hash = stored_hash();
-  std::lock_guard lk(h5::lock());
-  for (const auto& p : cell_files(dir_)) {
-    try {
-      out.push_back(read_cell_file(p, hash));
-      if (out.back().cell.id() != p.stem().string()) {
-        const std::string held = out.back().cell.id();
-        out.pop_back();
-        throw std::runtime_error("holds cell " + held);
-      }
-    } catch (const std::exception& e) {
-      // `study run` recomputes these; the report lists them by name.
-      if (unreadable) unreadable->push_back({p, e.what()});
-    }
-  }
-  return out;
-}
-
-std::size_t Store::assemble(const StudyConfig& config) const {
-  const std::vector<fs::path> files = cell_files(dir_);
+std::size_t CellStore::assemble(const std::map<std::string, h5::Attribute>& attributes, const Reader& read) const {
   std::size_t n = 0;
   std::string bytes;
   {
     std::lock_guard lk(h5::lock());
     h5::Handle dst = h5::create_memory_file();
-    h5::write_attribute(dst.id(), "study", config.name);
-    h5::write_attribute(dst.id(), "description", config.description);
-    h5::write_attribute(dst.id(), "config_toml", config.source_text);
-    h5::write_attribute(dst.id(), "config_canonical_json", config.canonical().dump());
-    h5::write_attribute(dst.id(), "config_hash", config.hash);
-    h5::write_attribute(dst.id(), "dpdrng_version", std::string(dpdrng::kVersion));
+    for (const auto& [name, value] : attributes) h5::write_attribute(dst.id(), name, value);
     h5::Handle cells = h5::create_group(dst.id(), "cells");
-    for (const auto& p : files) {
+    std::map<std::string, std::string> units;
+    const std::string config_hash = hash();
+    for (const auto& p : files()) {
       try {
         // Only a whole cell of this config, filed under its own id, is part of the store.
-        check_seal(p);
-        h5::Handle src = h5::open_file(p.string());
-        const auto attrs = h5::read_attributes(src.id());
-        auto it = attrs.find("config_hash");
-        if (it == attrs.end() || std::get<std::string>(it->second) != config.hash) continue;
-        {
-          h5::Handle g = h5::open_group(src.id(), "cell");
-          if (read_cell(g.id()).cell.id() != p.stem().string()) continue;
-        }
+        h5::Handle src = store_files::open_record(p, config_hash, read);
         h5::copy(src.id(), "cell", cells.id(), p.stem().string());
+        h5::Handle g = h5::open_group(src.id(), "cell");
+        store_files::collect_units(g.id(), units);
         ++n;
       } catch (const std::exception&) {
         continue;  // unreadable: not part of the store
       }
     }
     h5::write_attribute(dst.id(), "cells_stored", static_cast<std::int64_t>(n));
+    h5::Handle u = h5::create_group(dst.id(), "units");
+    for (const auto& [name, unit] : units) h5::write_attribute(u.id(), name, unit);
     bytes = h5::image(dst.id());
   }
   write_file_atomically(study_file(), bytes);
   return n;
 }
 
-std::size_t Store::merge_from(const Store& other, std::vector<UnreadableCell>* refused) {
-  if (other.stored_hash() != stored_hash())
+std::size_t CellStore::merge_from(const CellStore& other, const Reader& read,
+                                  std::vector<UnreadableCell>* refused) const {
+  if (other.hash() != hash())
     throw InputError(other.dir().string() + " was made with a different config than " + dir_.string() +
-                     " (hash " + other.stored_hash() + " vs " + stored_hash() + ")");
+                     " (hash " + other.hash() + " vs " + hash() + ")");
   std::size_t n = 0;
-  if (!fs::exists(other.dir() / "cells")) return 0;
-  for (const auto& e : fs::directory_iterator(other.dir() / "cells")) {
-    const fs::path& src = e.path();
-    if (src.extension() != ".h5" || src.filename().string()[0] == '.') continue;
+  for (const fs::path& src : other.files()) {
     const fs::path dst = dir_ / "cells" / src.filename();
     if (fs::exists(dst)) continue;
     // Only a whole cell of this config, filed under its own id, is copied.
     try {
       std::lock_guard lk(h5::lock());
-      const CellResult r = read_cell_file(src, stored_hash());
-      if (r.cell.id() != src.stem().string()) throw std::runtime_error("holds cell " + r.cell.id());
+      this->read(src, read);
     } catch (const std::exception& e) {
       if (refused) refused->push_back({src, e.what()});
       continue;
@@ -260,6 +223,76 @@ std::size_t Store::merge_from(const Store& other, std::vector<UnreadableCell>* r
     ++n;
   }
   return n;
+}
+
+namespace store_files {
+
+// A study cell's record, returning the id it holds.
+std::string read_study_cell(hid_t g, CellResult* out) {
+  CellResult r = read_cell(g);
+  std::string id = r.cell.id();
+  if (out) *out = std::move(r);
+  return id;
+}
+
+}  // namespace store_files
+
+void Store::open_for(const StudyConfig& config) { cells_.open("study.toml", config.source_text, config.hash); }
+
+StudyConfig Store::stored_config() const {
+  const fs::path p = dir() / "study.toml";
+  if (!fs::exists(p)) throw InputError(dir().string() + " is not a study directory (no study.toml)");
+  StudyConfig c = parse_config(store_files::read_text(p), p.string());
+  const std::string h = cells_.hash();
+  if (!h.empty() && h != c.hash)
+    throw InputError(p.string() + " does not match " + (dir() / "config.hash").string() +
+                     " (edited after the run?)");
+  return c;
+}
+
+Store::State Store::state(const Cell& cell, std::string* reason) const {
+  return cells_.state(cell.id(), [](hid_t g) { return store_files::read_study_cell(g, nullptr); }, reason);
+}
+
+void Store::save(const CellResult& r) {
+  cells_.save(r.cell.id(), [&r](hid_t g) { write_cell(g, r); });
+}
+
+CellResult Store::load(const Cell& cell) const {
+  CellResult r;
+  std::lock_guard lk(h5::lock());
+  cells_.read(cells_.cell_path(cell.id()), [&r](hid_t g) { return store_files::read_study_cell(g, &r); });
+  return r;
+}
+
+std::vector<CellResult> Store::load_all(std::vector<UnreadableCell>* unreadable) const {
+  std::vector<CellResult> out;
+  std::lock_guard lk(h5::lock());
+  for (const auto& p : cells_.files()) {
+    try {
+      CellResult r;
+      cells_.read(p, [&r](hid_t g) { return store_files::read_study_cell(g, &r); });
+      out.push_back(std::move(r));
+    } catch (const std::exception& e) {
+      // `study run` recomputes these; the report lists them by name.
+      if (unreadable) unreadable->push_back({p, e.what()});
+    }
+  }
+  return out;
+}
+
+std::size_t Store::assemble(const StudyConfig& config) const {
+  return cells_.assemble({{"study", config.name},
+                          {"description", config.description},
+                          {"config_toml", config.source_text},
+                          {"config_canonical_json", config.canonical().dump()},
+                          {"config_hash", config.hash},
+                          {"dpdrng_version", std::string(dpdrng::kVersion)}},
+                         [](hid_t g) { return store_files::read_study_cell(g, nullptr); });
+}
+
+std::size_t Store::merge_from(const Store& other, std::vector<UnreadableCell>* refused) {
+  return cells_.merge_from(other.cells_, [](hid_t g) { return store_files::read_study_cell(g, nullptr); }, refused);
 }
 
 }  // namespace dpdrng::study

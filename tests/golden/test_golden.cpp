@@ -43,6 +43,7 @@ void read_group(hid_t g, const std::string& prefix, Quantities& q) {
     if (timing_attribute(name)) continue;
     if (const auto* d = std::get_if<double>(&value)) q[prefix + name] = f64(*d);
     if (const auto* i = std::get_if<std::int64_t>(&value)) q[prefix + name] = i64(*i);
+    if (const auto* u = std::get_if<std::uint64_t>(&value)) q[prefix + name] = "u64 " + std::to_string(*u);
     if (const auto* s = std::get_if<std::string>(&value)) q[prefix + name] = str(*s);
   }
   for (const auto& name : study::h5::list(g)) {
@@ -211,8 +212,8 @@ TEST(Golden, BilayerStudyCells) {
 TEST(Golden, DecompositionSweep) {
   const study::DecompSweep sweep = study::load_decomp_sweep(source("decomposition.toml"));
   TempDir dir;
-  study::DecompStore store(dir.path / "out");
-  store.open_for(sweep);
+  const study::CellStore store(dir.path / "out");
+  study::open_decomp_store(store, sweep);
   study::run_decomp_sweep(sweep, store, {});
   std::vector<std::string> missing;
   const auto rows = study::load_decomp_rows(sweep, store, &missing);

@@ -124,8 +124,8 @@ TEST(DecompositionSweep, RunsAndWritesItsTable) {
   text.replace(text.find("name = \"philox4x32\""), 19, "name = \"tea64\"");
   const DecompSweep s = parse_decomp_sweep(text, "<test>");
   TempDir dir;
-  DecompStore store(dir.path / "store");
-  store.open_for(s);
+  const CellStore store(dir.path / "store");
+  open_decomp_store(store, s);
   const DecompRunSummary sum = run_decomp_sweep(s, store, {});
   EXPECT_EQ(sum.computed, 4u);
   std::vector<std::string> missing;

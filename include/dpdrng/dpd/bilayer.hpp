@@ -138,7 +138,7 @@ struct BilayerResult {
 
 BilayerResult run_bilayer(const BilayerConfig& cfg, const RunHooks& hooks = {});
 
-// The membrane's scalars (temperature_mean, pressure_xx_mean, …, status) plus their errors; arrays (profile,
+// The membrane's scalars (<name>_mean for temperature, pressure_xx, …; status) plus their errors; arrays (profile,
 // order by bond) only if `arrays`.
 nlohmann::json to_json(const BilayerResult& r, bool arrays);
 

@@ -26,6 +26,7 @@
 #include "dpdrng/stats/noise_power.hpp"
 #include "dpdrng/study/cell_result.hpp"
 #include "dpdrng/study/config.hpp"
+#include "dpdrng/study/observables.hpp"
 
 namespace dpdrng::study {
 
@@ -69,7 +70,7 @@ const char* to_string(Outcome o);  // "", "equivalent", "differs", "inconclusive
 
 // One observable of one variant against the reference.
 struct Comparison {
-  std::string observable;   // "temperature_mean", "vpdf_vs_mt", ...
+  std::string observable;   // "pressure_mean", "vpdf_vs_mt", ...
   std::size_t n = 0, n_ref = 0;
   double value = NAN, value_sd = NAN;  // mean and spread over replicas
   double ref = NAN, ref_sd = NAN;
@@ -214,15 +215,6 @@ struct TemperatureLimit {
 };
 TemperatureLimit temperature_limit(const Analysis& a, double power = 0.9);
 std::string temperature_limit_sentence(const Analysis& a);  // "" when no variant has a temperature test
-
-// The bilayer scene's scalars: cells store <name>_mean, _std, _sem and _sem_dof (measure.hpp).
-struct BilayerObservable {
-  const char* name;   // "tension"
-  const char* label;  // "Σ"
-  const char* what;   // "tension L_z[P_zz − (P_xx+P_yy)/2]"
-  const char* unit;   // in DPD reduced units: "k_BT/r_c²"
-};
-const std::vector<BilayerObservable>& bilayer_observables();
 
 // Replica mean of a cell scalar with its 95 % confidence half-width: Student t over the replicas when there are
 // at least two; with one replica, 1.96 × the run's own block standard error (`sem_name`), flagged.

@@ -1,6 +1,6 @@
 #pragma once
 // A sweep of the decomposition check (seeding × generator × rounds × domain grid × distribution) from a small
-// TOML file (study/decomposition.toml), run cell by cell into a store (decomposition_store.hpp), and its table
+// TOML file (study/decomposition.toml), run cell by cell into the cell store (decomposition_cell.hpp), and its table
 // made from the stored cells. Each (generator, seeding, distribution) cell runs the undecomposed reference once;
 // every domain grid then runs its decomposed copy against it.
 #include <iosfwd>
@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "dpdrng/study/decomposition_run.hpp"
-#include "dpdrng/study/decomposition_store.hpp"
+#include "dpdrng/study/decomposition_cell.hpp"
 #include "dpdrng/study/sweep.hpp"
 
 namespace dpdrng::study {
@@ -48,11 +48,11 @@ struct DecompRunSummary {
 };
 // Runs the shard's cells that the store does not hold, saving each as soon as it finishes. A cell file that
 // exists but cannot be read is named in a warning on the progress stream and computed again.
-DecompRunSummary run_decomp_sweep(const DecompSweep& sweep, DecompStore& store, const DecompRunOptions& options);
+DecompRunSummary run_decomp_sweep(const DecompSweep& sweep, const CellStore& store, const DecompRunOptions& options);
 
 // Every row of the sweep, in its order, read from the store; the ids of cells not stored (or unreadable) go to
 // *missing, and their rows are left out.
-std::vector<DecompResult> load_decomp_rows(const DecompSweep& sweep, const DecompStore& store,
+std::vector<DecompResult> load_decomp_rows(const DecompSweep& sweep, const CellStore& store,
                                            std::vector<std::string>* missing);
 
 // One row per result. The Markdown table is the human summary; the CSV carries every column.

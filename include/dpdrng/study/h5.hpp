@@ -36,7 +36,8 @@ class Handle {
   Closer close_ = nullptr;
 };
 
-using Attribute = std::variant<double, std::int64_t, std::string>;
+// An unsigned integer is written as HDF5's unsigned 64-bit type (seeds use the whole range); a signed one as int64.
+using Attribute = std::variant<double, std::int64_t, std::uint64_t, std::string>;
 
 struct Matrix {
   std::size_t rows = 0, cols = 0;
@@ -60,9 +61,14 @@ bool exists(hid_t parent, const std::string& name);
 
 void write_attribute(hid_t obj, const std::string& name, const Attribute& value);
 std::map<std::string, Attribute> read_attributes(hid_t obj);
+// An attribute of the dataset or group `name` under `parent` (a dataset's unit).
+void write_attribute(hid_t parent, const std::string& name, const std::string& attribute, const Attribute& value);
+std::map<std::string, Attribute> read_attributes(hid_t parent, const std::string& name);
 
-void write_series(hid_t group, const std::string& name, const std::vector<double>& values);
-void write_matrix(hid_t group, const std::string& name, const Matrix& m);
+// `integer`: stored as int64 (the caller has checked that every value is a whole number that a double holds
+// exactly); read back as doubles, the values are the same.
+void write_series(hid_t group, const std::string& name, const std::vector<double>& values, bool integer = false);
+void write_matrix(hid_t group, const std::string& name, const Matrix& m, bool integer = false);
 void write_strings(hid_t group, const std::string& name, const std::vector<std::string>& values);
 
 // Names of the links (groups or datasets) directly under a group, in name order.

@@ -1,8 +1,9 @@
 #pragma once
 // The measurements of one cell, as small adapters over the engine (dpd::run_water) and the statistical tests
 // (stats::chi2_uniform, stats::lag1_ttest, stats::nist). Each adapter writes named scalars and series into
-// the CellResult; the names are what analysis.cpp and report.cpp read:
-//   physics  temperature_mean/_std/_sem/_std_sem, pressure_mean/_sem, pressure_conservative_mean,
+// the CellResult; the names are what analysis.cpp and report.cpp read (the compared observables' names, standard
+// errors and units are those of the observable table, observables.hpp):
+//   physics  the kinetic temperature with its fluctuation, pressure_mean/_sem, pressure_conservative_mean,
 //            pressure_xx/yy/zz, diffusion_coefficient/diffusion_sem, vpdf_error_mb/_sem, momentum_drift (each _sem
 //            the run's own standard error, its degrees of freedom in _sem_dof); series temperature, vpdf/v,
 //            vpdf/p, vpdf/mb, msd/tau, msd/msd, rdf/r, rdf/g; matrices vpdf/jackknife, msd/jackknife,

@@ -1,5 +1,5 @@
-// The decomposition sweep's store: cell files read back to the bit, resume, unreadable cells, shards, and a
-// store that refuses another sweep's cells.
+// The decomposition sweep's cells in the cell store: records read back to the bit, resume, unreadable cells,
+// shards, a store that refuses another sweep's cells, and the assembled study.h5.
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -12,10 +12,11 @@
 
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/study/decomposition_sweep.hpp"
+#include "dpdrng/study/h5.hpp"
 #include "../cli/run_cli.hpp"
 #include "../temp_dir.hpp"
 
-namespace dpdrng::study::test_decomposition_store {
+namespace dpdrng::study::test_decomposition_cell {
 namespace {
 namespace fs = std::filesystem;
 using cli_test::slurp;
@@ -39,12 +40,25 @@ ttest_pairs = 4
 
 DecompSweep tiny() { return parse_decomp_sweep(kTiny, "<test>"); }
 
-// The record of a row without its wall-clock seconds: what must agree to the bit.
-nlohmann::json timeless(const DecompResult& r) {
-  nlohmann::json j = decomp_record(r);
+// A row without its wall-clock seconds, as text (every double in its shortest round-trip digits; NaN, which
+// never equals itself, as null): what must agree to the bit.
+std::string timeless(const DecompResult& r) {
+  nlohmann::json j = to_json(r);
   j["decomposed"].erase("seconds");
   if (j.contains("reference")) j["reference"].erase("seconds");
-  return j;
+  return j.dump();
+}
+
+// Rows through an HDF5 cell group and back, as the store keeps them.
+std::vector<DecompResult> round_trip(const std::vector<DecompResult>& rows, std::string* id = nullptr) {
+  std::lock_guard lock(h5::lock());
+  h5::Handle f = h5::create_memory_file();
+  h5::Handle g = h5::create_group(f.id(), "cell");
+  write_decomp_rows(g.id(), "some-cell", rows);
+  std::vector<DecompResult> back;
+  const std::string held = read_decomp_rows(g.id(), &back);
+  if (id) *id = held;
+  return back;
 }
 
 // Every output file's bytes, results.json without the seconds of its runs.
@@ -62,7 +76,7 @@ std::map<std::string, std::string> outputs(const fs::path& dir) {
   return out;
 }
 
-std::vector<std::string> stored_files(const DecompStore& store) {
+std::vector<std::string> stored_files(const CellStore& store) {
   std::vector<std::string> files;
   for (const auto& e : fs::directory_iterator(store.dir() / "cells")) files.push_back(e.path().filename().string());
   std::sort(files.begin(), files.end());
@@ -92,7 +106,11 @@ TEST(DecompositionStore, RecordKeepsNonFiniteNumbersToTheBit) {
   r.randomness.cross_pair_p = 0.1 + 0.2;
   r.decomposed.boundary.zeta_diff_sum = 4.9406564584124654e-324;  // the smallest subnormal
   r.decomposed.boundary.evaluations = ~std::uint64_t{0};
-  const DecompResult b = decomp_from_record(nlohmann::json::parse(decomp_record(r).dump()));
+  std::string id;
+  const auto back = round_trip({r}, &id);
+  ASSERT_EQ(back.size(), 1u);
+  EXPECT_EQ(id, "some-cell");
+  const DecompResult& b = back.front();
   EXPECT_EQ(std::bit_cast<std::uint64_t>(b.decomposed.diffusion), std::bit_cast<std::uint64_t>(r.decomposed.diffusion));
   EXPECT_EQ(b.reference.temperature.sem, -std::numeric_limits<double>::infinity());
   EXPECT_EQ(b.randomness.cross_pair_p, 0.1 + 0.2);
@@ -102,24 +120,40 @@ TEST(DecompositionStore, RecordKeepsNonFiniteNumbersToTheBit) {
   EXPECT_TRUE(b.has_reference);
 }
 
+TEST(DecompositionStore, RecordLackingAFieldIsRefusedNamingIt) {
+  DecompResult r;
+  r.has_reference = true;
+  std::lock_guard lock(h5::lock());
+  h5::Handle f = h5::create_memory_file();
+  h5::Handle g = h5::create_group(f.id(), "cell");
+  write_decomp_rows(g.id(), "some-cell", {r});
+  ASSERT_GE(H5Ldelete(g.id(), "row0/randomness", H5P_DEFAULT), 0);
+  try {
+    read_decomp_rows(g.id(), nullptr);
+    ADD_FAILURE() << "read a record without its randomness";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("randomness"), std::string::npos) << e.what();
+  }
+}
+
 TEST(DecompositionStore, ResumeComputesOnlyTheMissingCellAndGivesTheSameOutputs) {
   const DecompSweep s = tiny();
   TempDir t;
-  DecompStore store(t.path / "store");
-  store.open_for(s);
+  const CellStore store(t.path / "store");
+  open_decomp_store(store, s);
   const DecompRunSummary first = run_decomp_sweep(s, store, {});
   EXPECT_EQ(first.computed, 3u);
   EXPECT_EQ(first.resumed, 0u);
   const auto cells = decomp_cells(s);
   // Stored rows are the computed rows, to the bit.
   const auto fresh = run_decomp_cell(s, cells[0]);
-  const auto loaded = store.load(cells[0]);
+  const auto loaded = load_decomp_cell(store, cells[0]);
   ASSERT_EQ(fresh.size(), loaded.size());
   for (std::size_t i = 0; i < fresh.size(); ++i) EXPECT_EQ(timeless(fresh[i]), timeless(loaded[i]));
   write_decomp_outputs(s, load_decomp_rows(s, store, nullptr), (t.path / "a").string(), nullptr);
 
-  const std::string kept0 = slurp(store.cell_path(cells[0]).string()), kept2 = slurp(store.cell_path(cells[2]).string());
-  fs::remove(store.cell_path(cells[1]));
+  const std::string kept0 = slurp(store.cell_path(cells[0].id()).string()), kept2 = slurp(store.cell_path(cells[2].id()).string());
+  fs::remove(store.cell_path(cells[1].id()));
   std::ostringstream log;
   const DecompRunSummary second = run_decomp_sweep(s, store, {{}, &log});
   EXPECT_EQ(second.computed, 1u);
@@ -127,8 +161,8 @@ TEST(DecompositionStore, ResumeComputesOnlyTheMissingCellAndGivesTheSameOutputs)
   EXPECT_NE(log.str().find("2 of 3 cells already stored: resuming"), std::string::npos) << log.str();
   EXPECT_NE(log.str().find("3/3 cells  tea32(1)"), std::string::npos) << log.str();
   EXPECT_NE(log.str().find("pair-step"), std::string::npos) << log.str();
-  EXPECT_EQ(slurp(store.cell_path(cells[0]).string()), kept0);
-  EXPECT_EQ(slurp(store.cell_path(cells[2]).string()), kept2);
+  EXPECT_EQ(slurp(store.cell_path(cells[0].id()).string()), kept0);
+  EXPECT_EQ(slurp(store.cell_path(cells[2].id()).string()), kept2);
   std::vector<std::string> missing;
   write_decomp_outputs(s, load_decomp_rows(s, store, &missing), (t.path / "b").string(), nullptr);
   EXPECT_TRUE(missing.empty());
@@ -143,25 +177,23 @@ TEST(DecompositionStore, ResumeComputesOnlyTheMissingCellAndGivesTheSameOutputs)
 TEST(DecompositionStore, UnreadableCellIsNamedAndComputedAgain) {
   const DecompSweep s = tiny();
   TempDir t;
-  DecompStore store(t.path / "store");
-  store.open_for(s);
+  const CellStore store(t.path / "store");
+  open_decomp_store(store, s);
   run_decomp_sweep(s, store, {});
   const auto cells = decomp_cells(s);
-  const fs::path cut = store.cell_path(cells[0]), edited = store.cell_path(cells[1]);
+  const fs::path cut = store.cell_path(cells[0].id()), edited = store.cell_path(cells[1].id());
   const std::string whole = slurp(cut.string());
   std::ofstream(cut, std::ios::binary | std::ios::trunc) << whole.substr(0, whole.size() / 2);
-  std::string text = slurp(edited.string());
-  const std::size_t at = text.find("\"steps_done\": ");
-  ASSERT_NE(at, std::string::npos);
-  text.insert(at + 14, "1");  // a number changed by hand: still JSON, but not what was written
-  std::ofstream(edited, std::ios::binary | std::ios::trunc) << text;
+  std::string bytes = slurp(edited.string());
+  bytes[bytes.size() - 100] ^= 1;  // one bit changed on disk: the same length, not what was written
+  std::ofstream(edited, std::ios::binary | std::ios::trunc) << bytes;
 
   std::string why;
-  EXPECT_EQ(store.state(cells[0], &why), DecompStore::State::unreadable);
+  EXPECT_EQ(decomp_cell_state(store, cells[0], &why), CellStore::State::unreadable);
   EXPECT_NE(why.find("cut short"), std::string::npos) << why;
-  EXPECT_EQ(store.state(cells[1], &why), DecompStore::State::unreadable);
+  EXPECT_EQ(decomp_cell_state(store, cells[1], &why), CellStore::State::unreadable);
   EXPECT_NE(why.find("checksum"), std::string::npos) << why;
-  EXPECT_THROW(store.load(cells[0]), std::exception);
+  EXPECT_THROW(load_decomp_cell(store, cells[0]), std::exception);
   std::vector<std::string> missing;
   EXPECT_EQ(load_decomp_rows(s, store, &missing).size(), 2u);
   EXPECT_EQ(missing, (std::vector<std::string>{cells[0].id(), cells[1].id()}));
@@ -171,22 +203,22 @@ TEST(DecompositionStore, UnreadableCellIsNamedAndComputedAgain) {
   EXPECT_EQ(again.computed, 2u);
   EXPECT_EQ(again.unreadable, (std::vector<std::string>{cut.string(), edited.string()}));
   EXPECT_NE(log.str().find(cut.string() + " is unreadable"), std::string::npos) << log.str();
-  EXPECT_EQ(store.state(cells[0]), DecompStore::State::stored);
-  EXPECT_EQ(store.state(cells[1]), DecompStore::State::stored);
+  EXPECT_EQ(decomp_cell_state(store, cells[0]), CellStore::State::stored);
+  EXPECT_EQ(decomp_cell_state(store, cells[1]), CellStore::State::stored);
 }
 
 TEST(DecompositionStore, ShardsPartitionTheCells) {
   const DecompSweep s = tiny();
   const auto cells = decomp_cells(s);
   TempDir t;
-  DecompStore one(t.path / "one"), both(t.path / "both");
-  one.open_for(s);
-  both.open_for(s);
+  const CellStore one(t.path / "one"), both(t.path / "both");
+  open_decomp_store(one, s);
+  open_decomp_store(both, s);
   EXPECT_EQ(run_decomp_sweep(s, one, {{1, 2}, nullptr}).computed, 2u);
-  EXPECT_EQ(stored_files(one), (std::vector<std::string>{cells[0].id() + ".json", cells[2].id() + ".json"}));
+  EXPECT_EQ(stored_files(one), (std::vector<std::string>{cells[0].id() + ".h5", cells[2].id() + ".h5"}));
   // Shards may share a directory: each writes only its own cells.
   EXPECT_EQ(run_decomp_sweep(s, both, {{2, 2}, nullptr}).computed, 1u);
-  EXPECT_EQ(stored_files(both), (std::vector<std::string>{cells[1].id() + ".json"}));
+  EXPECT_EQ(stored_files(both), (std::vector<std::string>{cells[1].id() + ".h5"}));
   const DecompRunSummary rest = run_decomp_sweep(s, both, {{1, 2}, nullptr});
   EXPECT_EQ(rest.computed, 2u);
   EXPECT_EQ(rest.resumed, 0u);
@@ -197,12 +229,12 @@ TEST(DecompositionStore, ShardsPartitionTheCells) {
 
 TEST(DecompositionStore, RefusesAnotherSweepsDirectory) {
   TempDir t;
-  DecompStore store(t.path / "store");
-  store.open_for(tiny());
+  const CellStore store(t.path / "store");
+  open_decomp_store(store, tiny());
   std::string longer = kTiny;
   longer.replace(longer.find("steps = 20"), 10, "steps = 21");
   try {
-    store.open_for(parse_decomp_sweep(longer, "<test>"));
+    open_decomp_store(store, parse_decomp_sweep(longer, "<test>"));
     ADD_FAILURE() << "opened a store of another sweep";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("different config"), std::string::npos) << e.what();
@@ -242,9 +274,20 @@ TEST(DecompositionStore, CliResumesAndWritesTheOutputsOnceEveryCellIsStored) {
   EXPECT_NE(rest.err.find("2 computed, 1 resumed; 3 of 3 cells stored"), std::string::npos) << rest.err;
   EXPECT_EQ(rest.out, slurp((out / "table.md").string()));
   EXPECT_TRUE(fs::exists(out / "decomposition.toml"));
+  // Every stored cell is assembled into study.h5 as the study's are: rows as groups, counts as integers.
+  ASSERT_TRUE(fs::exists(out / "study.h5"));
+  {
+    std::lock_guard lock(h5::lock());
+    h5::Handle f = h5::open_file((out / "study.h5").string());
+    EXPECT_EQ(std::get<std::int64_t>(h5::read_attributes(f.id()).at("cells_stored")), 3);
+    h5::Handle b = h5::open_group(f.id(), "cells/" + decomp_cells(tiny())[0].id() + "/row1/decomposed/boundary");
+    const auto a = h5::read_attributes(b.id());
+    EXPECT_GT(std::get<std::uint64_t>(a.at("evaluations")), 0u);
+    EXPECT_TRUE(std::holds_alternative<double>(a.at("zeta_diff_max")));
+  }
   EXPECT_EQ(cli_test::run(cmd + " --shard 3/2").code, 2);
   EXPECT_EQ(cli_test::run("decompose --shard 1/2 --steps 5").code, 2);
 }
 
 }  // namespace
-}  // namespace dpdrng::study::test_decomposition_store
+}  // namespace dpdrng::study::test_decomposition_cell
