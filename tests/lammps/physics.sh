@@ -4,8 +4,9 @@
 #     in dpdrng, which is the same input undecomposed): k_BT, P and D agree, each within the 99.9 % CI of the
 #     difference (Welch; LAMMPS's errors from its production blocks, dpdrng's from its own error model, D's a
 #     jackknife over 20 groups of beads: 19 degrees of freedom);
-#  2. 32TEA(1) under the halves feed against LAMMPS's own pair_style dpd (Marsaglia's generator, one stream per
-#     rank) at the same settings: the k_BT shift's 95 % CI excludes 0 and overlaps the CI of the shift that
+#  2. 32TEA(1) under the halves feed against LAMMPS's own pair_style dpd (the force of Groot & Warren 1997 as the
+#     LAMMPS documentation of pair_style dpd states it, Marsaglia's generator, one stream per rank) at the same
+#     settings: the k_BT shift's 95 % CI excludes 0 and overlaps the CI of the shift that
 #     dpdrng's engine measures for 32TEA(1) against MT19937 at the same size (its ≈ −3.5 %).
 # A failure prints the numbers. Usage: tests/lammps/physics.sh LMP_DPDRNG DPDRNG [N]
 set -euo pipefail
