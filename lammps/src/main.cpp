@@ -1,0 +1,23 @@
+// lmp_dpdrng: LAMMPS's command-line program with pair_style dpd/hash added to its pair styles. The style is
+// compiled apart from the LAMMPS library and entered into the library's style table before the input is read,
+// so one LAMMPS build serves every version of the style.
+#include <mpi.h>
+
+#include "force.h"
+#include "input.h"
+#include "lammps.h"
+#include "pair_dpd_hash.h"
+
+namespace {
+LAMMPS_NS::Pair *create_dpd_hash(LAMMPS_NS::LAMMPS *lmp) { return new LAMMPS_NS::PairDPDHash(lmp); }
+}  // namespace
+
+int main(int argc, char **argv) {
+  MPI_Init(&argc, &argv);
+  auto *lmp = new LAMMPS_NS::LAMMPS(argc, argv, MPI_COMM_WORLD);
+  (*lmp->force->pair_map)["dpd/hash"] = &create_dpd_hash;
+  lmp->input->file();
+  delete lmp;
+  MPI_Finalize();
+  return 0;
+}
