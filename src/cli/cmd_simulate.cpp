@@ -114,7 +114,9 @@ void print_human(const dpd::RunResult& r) {
             << "velocity PDF error     "
             << (na ? "n/a"
                    : num(r.velocity_pdf.error_rate_kT_mean) + " (vs MB at k_BT), " +
-                         num(r.velocity_pdf.error_rate_measured_mean) + " (at measured T)")
+                         (std::isfinite(r.velocity_pdf.error_rate_measured_mean)
+                              ? num(r.velocity_pdf.error_rate_measured_mean) + " (at measured T)"
+                              : "at measured T not applicable: " + r.velocity_pdf.measured_not_applicable))
             << "\n"
             << (na ? "" : physics_lines(r))
             << "momentum drift / bead  " << r.momentum_drift << "\n"

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "dpdrng/common/numbers.hpp"
 #include "dpdrng/dpd/line_fit.hpp"
 #include "dpdrng/dpd/neighbours.hpp"
 
@@ -41,7 +42,9 @@ ErrorRates error_rates(const std::array<std::vector<double>, 3>& pdf, const std:
       sum += std::abs(pdf[c][b] - mb[b]) / mb[b];
       ++used;
     }
-    e.per_component[c] = used ? sum / used : 0;
+    // No bin to average over, or a bin where the reference density vanishes (a fluid frozen far below k_BT has
+    // all its Maxwell–Boltzmann mass inside one bin): the rate has no value.
+    e.per_component[c] = used && std::isfinite(sum) ? sum / used : NAN;
     e.pooled += e.per_component[c] / 3;
   }
   return e;
@@ -87,6 +90,9 @@ VelocityPdf VelocityHistogram::finish(double kT, double measured_kT) const {
   out.error_rate_measured = at_measured.per_component;
   out.error_rate_kT_mean = at_kT.pooled;
   out.error_rate_measured_mean = at_measured.pooled;
+  if (!std::isfinite(at_measured.pooled))
+    out.measured_not_applicable = "the Maxwell-Boltzmann density at the measured k_BT (" + format_g(measured_kT) +
+                                  ") vanishes in bins the rate averages over";
   jackknife(total, samples, out);
   return out;
 }

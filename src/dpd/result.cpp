@@ -254,6 +254,8 @@ nlohmann::json to_json(const RunResult& r, bool arrays) {
   j["velocity_pdf_error_rate"] = r.velocity_pdf.error_rate_kT_mean;
   j["velocity_pdf_error_rate_sem"] = r.velocity_pdf.error_rate_kT_mean_sem;
   j["velocity_pdf_error_rate_measured_T"] = r.velocity_pdf.error_rate_measured_mean;
+  if (!r.velocity_pdf.measured_not_applicable.empty())
+    j["not_applicable"]["velocity_pdf_error_rate_measured_T"] = "not applicable: " + r.velocity_pdf.measured_not_applicable;
   j["momentum_drift_per_bead"] = r.momentum_drift;
   j["temperature"] = to_json(r.temperature);
   j["pressure"] = to_json(r.pressure);

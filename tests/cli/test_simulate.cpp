@@ -356,4 +356,26 @@ TEST(CliSimulate, CompareRunsTheReferenceAtTheSameSettings) {
 
 }  // namespace
 
+namespace {
+
+// 32TEA(1) under pair-step seeding draws nearly one ζ for every pair and step: the dissipative force drains the
+// fluid to k_BT ≈ 1e-4, where the Maxwell–Boltzmann density at the measured temperature vanishes outside one bin.
+// The velocity PDF's error rate at the measured T then has no value: null with its reason, never nan or 0.
+TEST(CliSimulate, ErrorRateAtAFrozenTemperatureIsNotApplicable) {
+  const std::string args = "simulate -g tea32 -r 1 --seeding pair-step --steps 600 --equilibrate 300 ";
+  const json j = run_json(args);
+  EXPECT_LT(j.at("temperature_mean").get<double>(), 0.01);
+  EXPECT_TRUE(j.at("velocity_pdf_error_rate_measured_T").is_null());
+  EXPECT_NE(j.at("not_applicable").at("velocity_pdf_error_rate_measured_T").get<std::string>().find("vanishes"),
+            std::string::npos);
+  EXPECT_TRUE(j.at("velocity_pdf_error_rate").is_number());
+  const Result human = run(args);
+  ASSERT_EQ(human.code, 0) << human.err;
+  EXPECT_EQ(human.out.find("nan"), std::string::npos) << human.out;
+  EXPECT_NE(human.out.find("at measured T not applicable: the Maxwell-Boltzmann density"), std::string::npos)
+      << human.out;
+}
+
+}  // namespace
+
 }  // namespace dpdrng_test::cli_test_simulate

@@ -59,7 +59,8 @@ struct VelocityPdf {
   // Mean over bins with MB probability mass ≥ 1e-3 of |P − P_th| / P_th (the paper's error rate), per
   // component and pooled; tails are left out because their relative error is counting noise.
   std::array<double, 3> error_rate_kT{}, error_rate_measured{};
-  double error_rate_kT_mean = 0, error_rate_measured_mean = 0;
+  double error_rate_kT_mean = 0, error_rate_measured_mean = 0;  // NaN where a rate has no value
+  std::string measured_not_applicable;         // why error_rate_measured_mean is NaN
   double error_rate_kT_mean_sem = 0;           // jackknife over the histogram's blocks (NaN with fewer than 2)
   double error_rate_kT_mean_sem_dof = 0;       // blocks with samples − 1
   std::vector<std::vector<double>> jackknife;  // the pooled density with one block left out, per block with samples
