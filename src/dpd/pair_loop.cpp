@@ -326,8 +326,8 @@ class PairLoop final : public PairForces {
   // Row i's pairs inside r_c (partners j > i), appended to sc from pair `off` on; returns their number.
   static std::size_t row_in_range(const System& s, std::uint32_t i, double rc2, Scratch& sc, std::size_t off) {
     const pair_filter::Centre ctr = pair_filter::centre(s.box, s.x[i], s.y[i], s.z[i], rc2);
-    return pair_filter::append_in_range(s.x.data(), s.y.data(), s.z.data(), i + 1, std::uint32_t(s.size()), ctr,
-                                        sc.out(), off) -
+    return pair_filter::append_in_range<true>(s.x.data(), s.y.data(), s.z.data(), i + 1, std::uint32_t(s.size()),
+                                              ctr, sc.out(), off) -
            off;
   }
 
