@@ -223,8 +223,12 @@ class PairLoop final : public PairForces {
     sc.counts.clear();
     std::size_t off = 0;
     for (std::uint32_t i = i0; i < i1; ++i) {
-      sc.grow_pairs(off + (n - i - 1) + pair_filter::kSlack);
-      const std::size_t k = row_in_range(s, i, rc2, sc, off);
+      const std::size_t m = n - i - 1;
+      sc.grow_pairs(off + m);
+      double *dx = sc.dx.data() + off, *dy = sc.dy.data() + off, *dz = sc.dz.data() + off, *r2 = sc.r2.data() + off;
+      geometry(s.x.data() + i + 1, s.y.data() + i + 1, s.z.data() + i + 1, s.x[i], s.y[i], s.z[i], s.box, m, dx, dy,
+               dz, r2);
+      const std::size_t k = compact_in_range(i + 1, m, rc2, dx, dy, dz, r2, sc.j.data() + off);
       std::fill_n(sc.pi.data() + off, k, i);
       sc.counts.push_back(std::uint32_t(k));
       off += k;
@@ -305,12 +309,14 @@ class PairLoop final : public PairForces {
     const System& s = c.s;
     const std::size_t n = s.size();
     const std::size_t m = n - i - 1, base = pair_slot(i, i + 1, n);
+    geometry(s.x.data() + i + 1, s.y.data() + i + 1, s.z.data() + i + 1, s.x[i], s.y[i], s.z[i], s.box, m,
+             sc.dx.data(), sc.dy.data(), sc.dz.data(), sc.r2.data());
+    double* dxs = sc.dx.data();
+    double* dys = sc.dy.data();
+    double* dzs = sc.dz.data();
+    double* r2s = sc.r2.data();
     const double rc2 = k_.rc2();
     if constexpr (!Zero) {
-      // A stream or a tap draws every pair of the row: all of them keep their separations.
-      double *dxs = sc.dx.data(), *dys = sc.dy.data(), *dzs = sc.dz.data(), *r2s = sc.r2.data();
-      geometry(s.x.data() + i + 1, s.y.data() + i + 1, s.z.data() + i + 1, s.x[i], s.y[i], s.z[i], s.box, m, dxs,
-               dys, dzs, r2s);
       RowBatch b{i, m, dxs, dys, dzs, r2s, sc.j.data(), rc2, c.step, base, {nullptr, nullptr}, sc.zeta.data(),
                  c.in_tap ? used_room(sc, m) : nullptr};
       if (c.tap)
@@ -320,15 +326,7 @@ class PairLoop final : public PairForces {
       forces<Zero>(c, i, k, sc, 0, rows_[i]);
       return;
     }
-    forces<Zero>(c, i, row_in_range(s, i, rc2, sc, 0), sc, 0, rows_[i]);
-  }
-
-  // Row i's pairs inside r_c (partners j > i), appended to sc from pair `off` on; returns their number.
-  static std::size_t row_in_range(const System& s, std::uint32_t i, double rc2, Scratch& sc, std::size_t off) {
-    const pair_filter::Centre ctr = pair_filter::centre(s.box, s.x[i], s.y[i], s.z[i], rc2);
-    return pair_filter::append_in_range<true>(s.x.data(), s.y.data(), s.z.data(), i + 1, std::uint32_t(s.size()),
-                                              ctr, sc.out(), off) -
-           off;
+    forces<Zero>(c, i, compact_in_range(i + 1, m, rc2, dxs, dys, dzs, r2s, sc.j.data()), sc, 0, rows_[i]);
   }
 
   // Room for the used words of k pairs in sc.

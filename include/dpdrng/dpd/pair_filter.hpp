@@ -113,10 +113,8 @@ inline constexpr std::size_t kSlack = 0;
 #endif
 
 // Appends the candidates k in [lo, hi) of (x, y, z) with r² < rc2 (NaN fails), in order, as pairs with
-// partner k to out from index `kept` on; returns the new count. Sparse: most vectors hold no pair inside r_c
-// (all pairs: ~1 candidate in 20), so a branch past their stores is mostly predicted and saves them; among a
-// cell's candidates (~1 in 6) it would mispredict, and the stores are unconditional.
-template <bool Sparse = false>
+// partner k to out from index `kept` on; returns the new count. The stores are unconditional: among a cell's
+// candidates ~1 in 6 is kept, and a branch past a vector without any would mispredict.
 inline std::size_t append_in_range(const double* x, const double* y, const double* z, std::uint32_t lo,
                                    std::uint32_t hi, const Centre& c, const Out& out, std::size_t kept) {
 #if defined(__AVX512F__) && defined(__AVX512VL__) || defined(__AVX2__)
@@ -130,7 +128,6 @@ inline std::size_t append_in_range(const double* x, const double* y, const doubl
             d = min_image(pz - zi, Lz, hz, nLz, nhz);
     const V r2 = a * a + b * b + d * d;
     const unsigned m = inside(r2, rc2) & lanes;
-    if (Sparse && m == 0) return;
     put(out.dx + kept, a, m), put(out.dy + kept, b, m), put(out.dz + kept, d, m), put(out.r2 + kept, r2, m);
     put_j(out.j + kept, k, m);
     kept += std::size_t(std::popcount(m));

@@ -1,11 +1,12 @@
 #pragma once
 // The pair loop, compiled once (pair_loop.cpp), around a per-noise kernel (noise_kernel.hpp) that it calls once
 // per batch of pairs: a group of rows (all mode) or a layer of cells (cells mode), never per pair.
-//   all:   row i does its partners j > i: the pairs inside r_c, found by the SIMD filter (pair_filter.hpp).
-//          Under a hash, sixteen rows collect their pairs so, draw the noise of all of them in one batch (a
-//          hash's block depends on the pair alone, so the pairs outside r_c need none), then do their forces
-//          row by row. A stream, which owns a number per pair slot, and a tapped step, which records every
-//          pair's words, draw every pair of a row (geometry(), then NoiseKernel::row). Reactions are added
+//   all:   row i does its partners j > i: geometry (separation, r²) for all, then the pairs inside r_c kept
+//          (compact_in_range: ~1 candidate in 20 is kept, so a copy per kept pair beats the SIMD filter's
+//          stores per vector). Under a hash, sixteen rows collect their pairs so, draw the noise of all of
+//          them in one batch (a hash's block depends on the pair alone, so the pairs outside r_c need none),
+//          then do their forces row by row. A stream, which owns a number per pair slot, and a tapped step,
+//          which records every pair's words, draw every pair of a row (NoiseKernel::row). Reactions are added
 //          serially.
 //   cells: the beads are sorted by cell every step (neighbours.hpp) and copied into sorted arrays, both
 //          shared by the team (every sorted slot written once, so any team gives the same arrays); each cell
@@ -20,6 +21,8 @@
 // Both modes turn a batch's blocks into ζ in one call inside the kernel (the feed is switched
 // on once per batch, not per pair), and compute the second blocks only under the blocks feed.
 #include <algorithm>
+#include <bit>
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -48,6 +51,35 @@ inline void geometry(const double* __restrict x, const double* __restrict y, con
     dx[t] = a, dy[t] = b, dz[t] = c;
     r2[t] = a * a + b * b + c * c;
   }
+}
+
+// Keeps the pairs with r² < rc2 (NaN fails), in order, moving them to the front in place and writing their
+// partners partner(t) to j; returns how many. About 1 pair in 20 lies inside r_c in the all-pairs mode and 1 in
+// 7 among a cell's candidates, at random: a branch per pair would mispredict, and copying every pair
+// unconditionally (a store whose address depends on the count so far) costs more than it saves. So each run of
+// 64 pairs is first reduced to a bit mask (no branch), then only its set bits are visited.
+template <std::invocable<std::size_t> Partner>
+inline std::size_t compact_in_range(Partner partner, std::size_t m, double rc2, double* dx, double* dy, double* dz,
+                                    double* r2, std::uint32_t* j) {
+  std::size_t k = 0;
+  for (std::size_t base = 0; base < m; base += 64) {
+    const std::size_t n = std::min<std::size_t>(64, m - base);
+    std::uint64_t inside = 0;
+    for (std::size_t t = 0; t < n; ++t) inside |= std::uint64_t(r2[base + t] < rc2) << t;
+    for (; inside != 0; inside &= inside - 1, ++k) {
+      const std::size_t t = base + std::size_t(std::countr_zero(inside));
+      j[k] = partner(t);
+      dx[k] = dx[t], dy[k] = dy[t], dz[k] = dz[t], r2[k] = r2[t];
+    }
+  }
+  return k;
+}
+
+// The all-pairs rows' form: the partners are first_j, first_j + 1, …
+inline std::size_t compact_in_range(std::uint32_t first_j, std::size_t m, double rc2, double* dx, double* dy,
+                                    double* dz, double* r2, std::uint32_t* j) {
+  return compact_in_range([first_j](std::size_t t) { return first_j + std::uint32_t(t); }, m, rc2, dx, dy, dz, r2,
+                          j);
 }
 
 // All mode under a stream or a tapped step, row i: its m partners i + 1 … i + m (slots slot, slot + 1, …), every
