@@ -46,6 +46,14 @@ struct Case {
   dpd::WaterConfig cfg;
 };
 
+// What a scene's pairs cost: the step's time per pair inside r_c, and how many candidate pairs the search
+// computed a separation for per pair it kept (all mode: every pair; cells: the 27-cell stencil's half).
+struct PairCost {
+  double pairs_per_step = 0;       // pairs inside r_c per force evaluation, the run's mean
+  double candidates_per_pair = 0;  // candidates visited per pair kept
+  double ns_per_pair = 0;          // median production time per step / pairs_per_step
+};
+
 struct Measured {
   std::string label, pairs;
   std::size_t particles = 0;
@@ -54,6 +62,7 @@ struct Measured {
   double median_s = 0, particle_steps_per_s = 0;
   double pair_steps_per_s = 0;  // pairs inside r_c per step (the run's mean) × steps / median_s
   double share_estimate = 0;
+  PairCost cost;
 };
 
 std::vector<std::string> split(const std::string& s) {
@@ -96,6 +105,16 @@ dpd::Timings run_once(const Case& k) {
 
 using stats::median;
 
+// The pair counts of a run (every force evaluation: the start and each step) against its median time.
+PairCost pair_cost(const dpd::Timings& tm, const dpd::WaterConfig& cfg, double median_s) {
+  PairCost c;
+  const double evaluations = double(cfg.steps + 1), production = double(cfg.steps - cfg.equilibrate);
+  c.pairs_per_step = double(tm.pairs_in_range) / evaluations;
+  if (tm.pairs_in_range > 0) c.candidates_per_pair = double(tm.pair_candidates) / double(tm.pairs_in_range);
+  if (c.pairs_per_step > 0) c.ns_per_pair = 1e9 * median_s / production / c.pairs_per_step;
+  return c;
+}
+
 Measured summarise(const Case& k, const std::vector<double>& t, double share, double pairs_per_step = 0) {
   Measured m;
   m.label = k.label;
@@ -113,12 +132,16 @@ Measured summarise(const Case& k, const std::vector<double>& t, double share, do
 Measured measure(const Case& k, int repeat) {
   std::vector<double> t;
   double share = 0;
+  dpd::Timings last;
   for (int r = 0; r < repeat; ++r) {
-    const dpd::Timings tm = run_once(k);
-    t.push_back(tm.production_s);
-    share = tm.rng_share_estimate;
+    last = run_once(k);
+    t.push_back(last.production_s);
+    share = last.rng_share_estimate;
   }
-  return summarise(k, t, share);
+  Measured m = summarise(k, t, share);
+  m.cost = pair_cost(last, k.cfg, m.median_s);
+  m.pair_steps_per_s = m.cost.pairs_per_step * double(m.steps) / m.median_s;
+  return m;
 }
 
 // One and two threads run alternately, and the speed-up is the median of the pairs' ratios: on a shared
@@ -158,18 +181,18 @@ Scaling measure_scaling(Case k, int repeat) {
   k.cfg.threads = 1, k2.cfg.threads = 2;
   std::vector<double> t1, t2;
   Scaling out;
-  double pairs_per_step = 0;
+  dpd::Timings one;
   for (int r = 0; r < repeat; ++r) {
     progress("bench dpd: cells scaling, pair " + std::to_string(r + 1) + " of " + std::to_string(repeat));
-    const dpd::Timings one = run_once(k);
+    one = run_once(k);
     t1.push_back(one.production_s);
-    // Every force evaluation (the steps and the start) counts its pairs inside r_c.
-    pairs_per_step = double(one.zetas) / double(k.cfg.steps + 1);
     t2.push_back(run_once(k2).production_s);
     out.ratios.push_back(t1.back() / t2.back());
     out.machine_ratios.push_back(2 * t1.back() / side_by_side(k));
   }
+  const double pairs_per_step = pair_cost(one, k.cfg, 1).pairs_per_step;
   out.one = summarise(k, t1, 0, pairs_per_step), out.two = summarise(k2, t2, 0, pairs_per_step);
+  out.one.cost = pair_cost(one, k.cfg, out.one.median_s), out.two.cost = pair_cost(one, k2.cfg, out.two.median_s);
   out.speedup = median(out.ratios), out.machine = median(out.machine_ratios);
   return out;
 }
@@ -241,6 +264,8 @@ nlohmann::json to_json(const Measured& m) {
   return {{"case", m.label}, {"pairs", m.pairs}, {"particles", m.particles}, {"steps", m.steps},
           {"threads", m.threads}, {"median_s", m.median_s}, {"particle_steps_per_s", m.particle_steps_per_s},
           {"pair_steps_per_s", m.pair_steps_per_s},
+          {"pairs_per_step", m.cost.pairs_per_step}, {"ns_per_pair", m.cost.ns_per_pair},
+          {"candidates_per_pair", m.cost.candidates_per_pair},
           {"rng_share_estimate", m.share_estimate}};
 }
 
@@ -295,15 +320,18 @@ void print_table(const BenchDpdArgs& a, const std::vector<Measured>& table) {
   std::cout << "particle-steps/s (median of " << a.repeat << ", " << a.threads << " thread(s), " << a.distribution
             << ", feed " << a.feed << ")\nRNG share by difference: 'vs none' against the table's zeta = 0 run, 'in-run' against zeta = 0\n"
             << "force evaluations alternated with the run's own on its final state (timings.rng_share_estimate)\n";
+  std::cout << "ns/pair: the step's time per pair inside r_c; cand/pair: candidate pairs whose separation the search "
+               "computed per pair kept\n";
   std::cout << std::left << std::setw(7) << "pairs" << std::setw(9) << "beads" << std::setw(20) << "noise"
-            << std::right << std::setw(14) << "p-steps/s" << std::setw(12) << "vs none" << std::setw(12)
-            << "in-run" << "\n";
+            << std::right << std::setw(14) << "p-steps/s" << std::setw(10) << "ns/pair" << std::setw(11)
+            << "cand/pair" << std::setw(12) << "vs none" << std::setw(12) << "in-run" << "\n";
   double none_s = 0;
   for (const auto& m : table) {
     if (m.label.rfind("none", 0) == 0) none_s = m.median_s;
     std::cout << std::left << std::setw(7) << m.pairs << std::setw(9) << m.particles << std::setw(20) << m.label
-              << std::right << std::setw(14) << std::setprecision(4) << m.particle_steps_per_s << std::setw(11)
-              << std::fixed << std::setprecision(1) << 100 * (m.median_s - none_s) / m.median_s << "%"
+              << std::right << std::setw(14) << std::setprecision(4) << m.particle_steps_per_s << std::fixed
+              << std::setprecision(1) << std::setw(10) << m.cost.ns_per_pair << std::setw(11)
+              << m.cost.candidates_per_pair << std::setw(11) << 100 * (m.median_s - none_s) / m.median_s << "%"
               << std::setw(11) << 100 * m.share_estimate << "%" << std::defaultfloat << "\n";
   }
 }
@@ -329,7 +357,9 @@ void print_scaling(const BenchDpdArgs& a, const Scaling& sc) {
             << a.integrator << ", one and two threads alternately, " << sc.ratios.size() << " pairs: 1 thread "
             << sc.one.particle_steps_per_s << " p-steps/s = " << sc.one.pair_steps_per_s << " pair-steps/s, 2 threads "
             << sc.two.particle_steps_per_s << " p-steps/s = " << sc.two.pair_steps_per_s
-            << " pair-steps/s (medians), speed-up "
+            << " pair-steps/s (medians); " << sc.one.cost.ns_per_pair << " ns per pair inside r_c on 1 thread, "
+            << sc.two.cost.ns_per_pair << " on 2, " << sc.one.cost.candidates_per_pair
+            << " candidates visited per pair kept; speed-up "
             << sc.speedup << "x (median of the pairs' ratios; range " << range(sc.ratios) << ")\n"
             << "two independent one-thread runs side by side after each pair: " << sc.machine
             << "x together (median; range " << range(sc.machine_ratios) << "); the threaded speed-up is "

@@ -194,6 +194,7 @@ BilayerResult run_bilayer(const BilayerConfig& in, const RunHooks& hooks) {
       counted.seconds += seconds_between(t0, t2), bonded_s += seconds_between(t1, t2);
       counted.numbers += f.numbers;
       counted.zetas += f.in_range;
+      counted.pairs += f.in_range, counted.candidates += f.candidates;
       // Once per production step, on the positions the pair forces just used.
       if (tracker && current > cfg.equilibrate && current > tracked)
         tracker->record(sys, *p, static_cast<std::uint64_t>(current)), tracked = current;

@@ -123,7 +123,7 @@ void SortedCells::places(std::size_t t, std::size_t team) {
 
 void SortedCells::fill_forward() {
   forward_.assign(gridded() ? std::size_t(ncell_) * kForward : 0, 0);
-  if (!gridded()) return;
+  if (!gridded()) return fill_runs();
   for (int c = 0; c < ncell_; ++c) {
     const int cx = c % n_[0], cy = (c / n_[0]) % n_[1], cz = c / (n_[0] * n_[1]);
     std::int32_t* out = forward_.data() + std::size_t(c) * kForward;
@@ -135,6 +135,26 @@ void SortedCells::fill_forward() {
           const int x = (cx + dx + n_[0]) % n_[0], y = (cy + dy + n_[1]) % n_[1], z = (cz + dz) % n_[2];
           out[k++] = (z * n_[1] + y) * n_[0] + x;
         }
+  }
+  fill_runs();
+}
+
+void SortedCells::fill_runs() {
+  runs_.assign(std::size_t(ncell_) * (kForward + 1), Run{0, 0});
+  run_count_.assign(std::size_t(ncell_), 0);
+  const int nf = forward_count();
+  for (int c = 0; c < ncell_; ++c) {
+    Run* out = runs_.data() + std::size_t(c) * (kForward + 1);
+    int k = 0;
+    out[k++] = {c, c};
+    for (int f = 0; f < nf; ++f) {
+      const std::int32_t next = forward(c)[f];
+      if (next == out[k - 1].last + 1)
+        out[k - 1].last = next;
+      else
+        out[k++] = {next, next};
+    }
+    run_count_[std::size_t(c)] = k;
   }
 }
 

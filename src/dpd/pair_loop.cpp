@@ -11,6 +11,7 @@
 
 #include "dpdrng/dpd/neighbours.hpp"
 #include "dpdrng/dpd/spin.hpp"
+#include "dpdrng/dpd/pair_filter.hpp"
 
 namespace dpdrng::dpd {
 
@@ -45,6 +46,35 @@ void sort_by_key(InRangeTap& tap) {
     sorted.zeta.push_back(tap.zeta[t]);
   }
   tap.keys.swap(sorted.keys), tap.words.swap(sorted.words), tap.zeta.swap(sorted.zeta);
+}
+
+// What the cells loop's second pass adds up for each pair inside r_c: the force on the own bead s·d, the
+// conservative weight and w (DpdKernel::evaluate's and conservative_weight's values).
+struct PairTerms {
+  double *gx, *gy, *gz, *cw, *w;
+};
+
+// The first pass over pairs [first, last) of a layer: every pair's terms, in a loop that carries no sum, so that
+// it vectorises (gathers of the partners' velocities included); the second pass sums them in the pair order of
+// the scalar loop, which keeps every total's bits. Own bead own[t] and partner j[t] are sorted indices; a is
+// a_ij for every pair (one bead type).
+template <bool Zero>
+void pair_terms(const double* __restrict dx, const double* __restrict dy, const double* __restrict dz,
+                const double* __restrict r2, const double* __restrict zeta, const std::uint32_t* __restrict own,
+                const std::uint32_t* __restrict j, const double* __restrict vx, const double* __restrict vy,
+                const double* __restrict vz, double a, const DpdKernel& k, std::size_t first, std::size_t last,
+                double* __restrict gx, double* __restrict gy, double* __restrict gz, double* __restrict cw,
+                double* __restrict w) {
+  const double rc = k.rc, gamma = k.gamma, sig = k.sigma * k.inv_sqrt_dt;
+  for (std::size_t t = first; t < last; ++t) {
+    const std::uint32_t p = own[t], q = j[t];
+    const double z = Zero ? 0.0 : zeta[t];
+    const PairForce pf = DpdKernel::evaluate(r2[t], dx[t], dy[t], dz[t], vx[q] - vx[p], vy[q] - vy[p],
+                                             vz[q] - vz[p], a, z, rc, gamma, sig);
+    gx[t] = pf.s * dx[t], gy[t] = pf.s * dy[t], gz[t] = pf.s * dz[t];
+    cw[t] = DpdKernel::conservative_weight(pf, r2[t]);
+    w[t] = pf.w;
+  }
 }
 
 class PairLoop final : public PairForces {
@@ -89,6 +119,7 @@ class PairLoop final : public PairForces {
         all_rows<false>(c);
       sums = reduce(s, c.conf);
       sums.numbers = calls * slots;
+      sums.candidates = slots;
     } else {
       sums = compute_cells(c);
       sums.numbers = calls * sums.in_range;
@@ -129,28 +160,27 @@ class PairLoop final : public PairForces {
     // the pairs' bead ids, own (pi) and partner's (ids), and each own bead's number of pairs, in order.
     std::vector<double> dx, dy, dz, r2;
     std::vector<std::uint32_t> j, ids, pi, counts;
+    std::vector<std::uint32_t> own;  // cells: the pairs' own beads' sorted indices
     std::vector<double> zeta;
-    std::vector<double> cx, cy, cz;   // cells: coordinates of a cell's candidates, contiguous
-    std::vector<std::uint32_t> cand;  // cells: their sorted indices
+    std::vector<double> gx, gy, gz, cw, w;  // cells: the pairs' terms (pair_terms)
     std::vector<std::uint64_t> tap[2];  // cells: a layer's tapped words
     std::vector<std::uint64_t> used;    // the batch's used words, on steps that tap the pairs inside r_c
-    void resize(std::size_t n) { grow_pairs(n), grow_candidates(n); }
-    // Room for n pairs, keeping those already collected.
+    void resize(std::size_t n) { grow_pairs(n + pair_filter::kSlack); }
+    // Room for n pairs, keeping those already collected (callers add the filter's slack).
     void grow_pairs(std::size_t n) {
       if (dx.size() >= n) return;
       n = std::max(n, 2 * dx.size());
       dx.resize(n), dy.resize(n), dz.resize(n), r2.resize(n), j.resize(n), ids.resize(n), pi.resize(n);
-      zeta.resize(n);
+      zeta.resize(n), own.resize(n);
+      gx.resize(n), gy.resize(n), gz.resize(n), cw.resize(n), w.resize(n);
     }
-    void grow_candidates(std::size_t m) {
-      if (cand.size() < m) cx.resize(m), cy.resize(m), cz.resize(m), cand.resize(m);
-    }
+    pair_filter::Out out() { return {dx.data(), dy.data(), dz.data(), r2.data(), j.data()}; }
   };
   struct CellSums {
     double w[3] = {0, 0, 0}, wc[3] = {0, 0, 0};
     double min_r2 = 0;
     double laplacian = 0;
-    std::uint64_t count = 0;
+    std::uint64_t count = 0, candidates = 0;
     ZetaSums zeta;
   };
   struct Ctx {
@@ -362,41 +392,40 @@ class PairLoop final : public PairForces {
     return {layers * t / nt, layers * (t + 1) / nt};
   }
 
-  // Candidates of cell c, contiguous in sc: its own beads first, then those of its forward neighbours.
-  std::size_t candidates(int c, Scratch& sc) const {
-    const std::int32_t* fw = cells_.forward(c);
-    const int nf = cells_.forward_count();
-    std::size_t m = cells_.end(c) - cells_.begin(c);
-    for (int f = 0; f < nf; ++f) m += cells_.end(fw[f]) - cells_.begin(fw[f]);
-    sc.grow_candidates(m);
-    std::size_t t = 0;
-    auto add = [&](int cell) {
-      for (std::uint32_t k = cells_.begin(cell); k < cells_.end(cell); ++k, ++t)
-        sc.cand[t] = k, sc.cx[t] = xs_[k], sc.cy[t] = ys_[k], sc.cz[t] = zs_[k];
-    };
-    add(c);
-    for (int f = 0; f < nf; ++f) add(fw[f]);
+  // Cell c's candidates: its own beads and its forward neighbours'.
+  std::size_t candidates(int c) const {
+    const SortedCells::Run* runs = cells_.runs(c);
+    std::size_t m = 0;
+    for (int r = 0; r < cells_.run_count(c); ++r) m += cells_.end(runs[r].last) - cells_.begin(runs[r].first);
     return m;
   }
 
-  // Bead q of the cell (sorted index a) against the candidates after it: the pairs inside r_c, compacted
-  // into sc from pair `off` on (partners' sorted indices in sc.j). Returns their number.
-  std::size_t in_range(const Box& box, std::uint32_t a, std::size_t q, std::size_t m, std::size_t off,
-                       Scratch& sc) const {
-    const std::size_t len = m - q - 1;
-    sc.grow_pairs(off + len);
-    double *dx = sc.dx.data() + off, *dy = sc.dy.data() + off, *dz = sc.dz.data() + off, *r2 = sc.r2.data() + off;
-    geometry(sc.cx.data() + q + 1, sc.cy.data() + q + 1, sc.cz.data() + q + 1, xs_[a], ys_[a], zs_[a], box, len,
-             dx, dy, dz, r2);
-    const std::uint32_t* cand = sc.cand.data() + q + 1;
-    return compact_in_range([cand](std::size_t t) { return cand[t]; }, len, k_.rc2(), dx, dy, dz, r2,
-                            sc.j.data() + off);
+  // Sorted bead a of cell c against the candidates after it (the rest of its cell, then the forward neighbours',
+  // straight from the sorted arrays, run by run): the pairs inside r_c, appended to sc from pair `off` on
+  // (partners' sorted indices in sc.j). Returns their number. sc must have room for the candidates and the
+  // filter's slack from `off` on.
+  std::size_t in_range(const Box& box, int c, std::uint32_t a, std::size_t off, Scratch& sc) const {
+    const pair_filter::Centre ctr = pair_filter::centre(box, xs_[a], ys_[a], zs_[a], k_.rc2());
+    const pair_filter::Out out = sc.out();
+    const SortedCells::Run* runs = cells_.runs(c);
+    std::size_t kept = off;
+    for (int r = 0; r < cells_.run_count(c); ++r) {
+      const std::uint32_t lo = r == 0 ? a + 1 : cells_.begin(runs[r].first);
+      kept = pair_filter::append_in_range(xs_.data(), ys_.data(), zs_.data(), lo, cells_.end(runs[r].last), ctr, out,
+                                          kept);
+    }
+    return kept - off;
+  }
+
+  // Room in sc for every pair of cell c's beads from pair `off` on.
+  void room_for_cell(int c, std::size_t off, Scratch& sc) const {
+    sc.grow_pairs(off + std::size_t(cells_.end(c) - cells_.begin(c)) * candidates(c) + pair_filter::kSlack);
   }
 
   std::uint64_t count_cell(const Box& box, int c, Scratch& sc) const {
-    const std::size_t m = candidates(c, sc), own = cells_.end(c) - cells_.begin(c);
+    room_for_cell(c, 0, sc);
     std::uint64_t count = 0;
-    for (std::size_t q = 0; q < own; ++q) count += in_range(box, cells_.begin(c) + std::uint32_t(q), q, m, 0, sc);
+    for (std::uint32_t a = cells_.begin(c); a < cells_.end(c); ++a) count += in_range(box, c, a, 0, sc);
     return count;
   }
 
@@ -408,10 +437,10 @@ class PairLoop final : public PairForces {
     sc.counts.clear();
     std::size_t off = 0;
     for (int c = c0; c < c1; ++c) {
-      const std::size_t m = candidates(c, sc), own = cells_.end(c) - cells_.begin(c);
-      for (std::size_t q = 0; q < own; ++q) {
-        const std::uint32_t a = cells_.begin(c) + std::uint32_t(q);
-        const std::size_t k = in_range(box, a, q, m, off, sc);
+      room_for_cell(c, off, sc);
+      for (std::uint32_t a = cells_.begin(c); a < cells_.end(c); ++a) {
+        const std::size_t k = in_range(box, c, a, off, sc);
+        std::fill_n(sc.own.data() + off, k, a);
         if constexpr (!Zero)
           for (std::size_t t = off; t < off + k; ++t) sc.ids[t] = ids[sc.j[t]], sc.pi[t] = ids[a];
         sc.counts.push_back(std::uint32_t(k));
@@ -468,7 +497,60 @@ class PairLoop final : public PairForces {
     const std::size_t k = collect<Zero>(cx.s.box, c0, c1, sc);
     if constexpr (!Zero) draw(cx, c0, c1, k, sc, thread, tap);
     std::size_t off = 0, bead = 0;
-    for (int c = c0; c < c1; ++c) cell_forces<Zero>(cx, c, sc, off, bead);
+    if (cx.conf || k_.ntypes != 1) {
+      for (int c = c0; c < c1; ++c) cell_forces<Zero>(cx, c, sc, off, bead);
+      return;
+    }
+    pair_terms<Zero>(sc.dx.data(), sc.dy.data(), sc.dz.data(), sc.r2.data(), sc.zeta.data(), sc.own.data(),
+                     sc.j.data(), vxs_.data(), vys_.data(), vzs_.data(), k_.a[0], k_, 0, k, sc.gx.data(), sc.gy.data(),
+                     sc.gz.data(), sc.cw.data(), sc.w.data());
+    for (int c = c0; c < c1; ++c) cell_sums<Zero>(cx, c, sc, off, bead);
+  }
+
+  // Candidates cell c's beads visit: each its cell's beads after it and all of the forward neighbours'.
+  std::uint64_t cell_candidates(int c) const {
+    const std::uint64_t own = cells_.end(c) - cells_.begin(c);
+    return own * candidates(c) - own * (own + 1) / 2;
+  }
+
+  // Cell c's forces from the terms pair_terms left in sc (one bead type, no configurational sums): cell_forces'
+  // sums over the same values in the same order, so the same bits. Pairs from `off` and own beads from `bead` on
+  // (both advanced past them).
+  template <bool Zero>
+  void cell_sums(const Ctx& cx, int c, const Scratch& sc, std::size_t& off, std::size_t& bead) {
+    const double *dxs = sc.dx.data(), *dys = sc.dy.data(), *dzs = sc.dz.data(), *r2s = sc.r2.data();
+    const double *gxs = sc.gx.data(), *gys = sc.gy.data(), *gzs = sc.gz.data(), *cws = sc.cw.data();
+    const double *ws = sc.w.data(), *zetas = sc.zeta.data();
+    const std::uint32_t* js = sc.j.data();
+    double *fxs = fxs_.data(), *fys = fys_.data(), *fzs = fzs_.data();
+    double ww = 0, wwzz = 0;
+    CellSums cs;
+    cs.min_r2 = k_.rc2();
+    for (std::uint32_t a = cells_.begin(c); a < cells_.end(c); ++a) {
+      const std::size_t first = off, k = sc.counts[bead++];
+      off += k;
+      if constexpr (!Zero)
+        if (cx.tap_zeta) cs.zeta.add(zetas + first, k);
+      double fx = 0, fy = 0, fz = 0;
+      for (std::size_t t = first; t < off; ++t) {
+        const std::uint32_t b = js[t];
+        const double dx = dxs[t], dy = dys[t], dz = dzs[t], r2 = r2s[t];
+        const double zeta = Zero ? 0.0 : zetas[t];
+        const double gx = gxs[t], gy = gys[t], gz = gzs[t], cw = cws[t];
+        fx += gx, fy += gy, fz += gz;
+        fxs[b] -= gx, fys[b] -= gy, fzs[b] -= gz;
+        cs.w[0] -= gx * dx, cs.w[1] -= gy * dy, cs.w[2] -= gz * dz;
+        cs.wc[0] += cw * dx * dx, cs.wc[1] += cw * dy * dy, cs.wc[2] += cw * dz * dz;
+        const double w2p = ws[t] * ws[t];
+        ww += w2p, wwzz += w2p * zeta * zeta;
+        cs.min_r2 = std::min(cs.min_r2, r2);
+      }
+      fxs[a] += fx, fys[a] += fy, fzs[a] += fz;
+      cs.count += k;
+    }
+    if (cx.tap_zeta) cs.zeta.w2 = ww, cs.zeta.w2z2 = wwzz;
+    cs.candidates = cell_candidates(c);
+    cell_sums_[c] = cs;
   }
 
   // The forces of cell c's pairs, collected in sc from pair `off` and own bead `bead` on (both advanced past
@@ -523,6 +605,7 @@ class PairLoop final : public PairForces {
       cs.count += k;
     }
     if (cx.tap_zeta) cs.zeta.w2 = ww, cs.zeta.w2z2 = wwzz;
+    cs.candidates = cell_candidates(c);
     cell_sums_[c] = cs;
   }
 
@@ -562,6 +645,7 @@ class PairLoop final : public PairForces {
       for (int a = 0; a < 3; ++a) sums.virial[a] += cs.w[a], sums.virial_cons[a] += cs.wc[a];
       sums.min_r2 = std::min(sums.min_r2, cs.min_r2);
       sums.in_range += cs.count;
+      sums.candidates += cs.candidates;
       sums.zeta.merge(cs.zeta);
       sums.conf_laplacian += cs.laplacian;
     }

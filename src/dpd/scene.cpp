@@ -80,6 +80,8 @@ Timings scene_timings(const SceneRun& run, const ForceCounters& counters, const 
       run.production_s > 0 ? n * double(run.steps_done - limits.equilibrate) / run.production_s : 0;
   t.random_numbers = counters.numbers;
   t.zetas = counters.zetas;
+  t.pairs_in_range = counters.pairs;
+  t.pair_candidates = counters.candidates;
   t.ns_per_number = pair.ns_per_number();
   t.ns_per_zeta = pair.ns_per_zeta();
   // By difference against ζ = 0 on the final state (3 % of the run's time at most, beyond 5 pairs of force

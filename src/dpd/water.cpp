@@ -191,6 +191,7 @@ RunResult run_water(const WaterConfig& in, const RunHooks& hooks) {
       tracker->record(sys, *pair, static_cast<std::uint64_t>(current)), tracked = current;
     counted.numbers += f.numbers;
     counted.zetas += cfg.noise_override == NoiseOverride::none ? 0 : f.in_range;
+    counted.pairs += f.in_range, counted.candidates += f.candidates;
     return f;
   };
 

@@ -24,6 +24,13 @@ TEST(CliBenchDpd, ScalingOnlyReportsEveryPairAndTheSideBySideRuns) {
     ASSERT_EQ(j[key].size(), 2u) << key;
     for (double v : j[key]) EXPECT_TRUE(std::isfinite(v) && v > 0) << key << " " << v;
   }
+  for (const auto& m : j["scaling"]) {
+    // Cells of width r_c: a bead meets its own cell's later beads and 13 neighbour cells' (13.5 cells, ~40
+    // candidates at ρ = 3) for about 2πρ/3 ≈ 6.3 pairs inside r_c.
+    EXPECT_GT(m["candidates_per_pair"].get<double>(), 5.0) << m;
+    EXPECT_LT(m["candidates_per_pair"].get<double>(), 8.0) << m;
+    EXPECT_GT(m["ns_per_pair"].get<double>(), 0.0) << m;
+  }
   // The median of two pairs' ratios is their mean.
   const double a = j["scaling_side_by_side_ratios"][0], b = j["scaling_side_by_side_ratios"][1];
   EXPECT_EQ(j["scaling_side_by_side_2_copies"].get<double>(), 0.5 * (a + b));

@@ -66,10 +66,19 @@ class SortedCells {
   // The forward neighbours of c: forward_count() cells from forward(c) (none in the single-cell case).
   int forward_count() const { return gridded() ? kForward : 0; }
   const std::int32_t* forward(int c) const { return forward_.data() + std::size_t(c) * kForward; }
+  // Cell c's candidates (its own beads, then its forward neighbours' in order) as runs of consecutive cell
+  // indices, whose sorted beads are contiguous: run r spans [begin(first), end(last)). The own cell starts the
+  // first run. Without a grid, one run of the one cell.
+  struct Run {
+    std::int32_t first, last;
+  };
+  int run_count(int c) const { return run_count_[std::size_t(c)]; }
+  const Run* runs(int c) const { return runs_.data() + std::size_t(c) * (kForward + 1); }
   std::uint64_t builds() const { return builds_; }
 
  private:
   void fill_forward();
+  void fill_runs();
   std::uint32_t cell_index(double x, double y, double z) const;
   void count(const System& s, std::size_t lo, std::size_t hi, std::uint32_t* counts);
   void places(std::size_t t, std::size_t team);
@@ -79,6 +88,8 @@ class SortedCells {
   std::vector<std::uint32_t> start_, order_, cell_;
   std::vector<std::uint32_t> counts_, places_;  // per thread and cell: beads; the thread's next place
   std::vector<std::int32_t> forward_;  // kForward per cell, fixed order
+  std::vector<Run> runs_;              // kForward + 1 per cell, run_count_ of them used
+  std::vector<std::int32_t> run_count_;
   std::uint64_t builds_ = 0;
 };
 

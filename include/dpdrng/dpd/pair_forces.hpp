@@ -46,6 +46,7 @@ struct ForceSums {
   std::array<double, 3> virial_cons{};  // the same for the conservative force alone
   double min_r2 = 0;                    // closest pair seen (inside r_c; r_c² if none)
   std::uint64_t in_range = 0;           // pairs inside r_c
+  std::uint64_t candidates = 0;         // pairs whose separation the search computed to find them
   std::uint64_t numbers = 0;            // generator calls this step
   ZetaSums zeta;                        // the ζ of the pairs inside r_c, when asked for (tap_zeta)
   // The configurational temperature's parts over the conservative potential U (kernel.hpp): Σ_i |∇_i U|² (the

@@ -2,14 +2,16 @@
 // The pair loop, compiled once (pair_loop.cpp), around a per-noise kernel (noise_kernel.hpp) that it calls once
 // per batch of pairs: a group of rows (all mode) or a layer of cells (cells mode), never per pair.
 //   all:   row i does its partners j > i: geometry (separation, r²) for all, then the pairs inside r_c kept
-//          (compact_in_range). Under a hash, sixteen rows collect their pairs so, draw the noise of all of
+//          (compact_in_range: ~1 candidate in 20 is kept, so a copy per kept pair beats the SIMD filter's
+//          stores per vector). Under a hash, sixteen rows collect their pairs so, draw the noise of all of
 //          them in one batch (a hash's block depends on the pair alone, so the pairs outside r_c need none),
 //          then do their forces row by row. A stream, which owns a number per pair slot, and a tapped step,
 //          which records every pair's words, draw every pair of a row (NoiseKernel::row). Reactions are added
 //          serially.
 //   cells: the beads are sorted by cell every step (neighbours.hpp) and copied into sorted arrays, both
 //          shared by the team (every sorted slot written once, so any team gives the same arrays); each cell
-//          does its own pairs and those with its 13 forward neighbours, writing both forces at once. A layer
+//          does its own pairs and those with its 13 forward neighbours, writing both forces at once; the
+//          filter reads the candidates straight from the sorted arrays, in runs of consecutive cells. A layer
 //          of cells collects its pairs inside r_c first and draws their noise in one batch (long enough for
 //          the vectorised hash and Box–Muller), then does the cells' forces in the same order as ever; even
 //          z-layers of cells run in parallel (disjoint writes), and each odd one once its two even

@@ -91,6 +91,9 @@ struct Timings {
   double production_s = 0, production_particle_steps_per_s = 0;
   std::uint64_t random_numbers = 0;  // generator calls (all mode: every pair every step)
   std::uint64_t zetas = 0;           // distribution transforms (pairs inside r_c)
+  // Over every force evaluation: pairs inside r_c (a ζ = 0 run's too) and the candidate pairs whose separation
+  // the pair search computed to find them (all mode: every pair).
+  std::uint64_t pairs_in_range = 0, pair_candidates = 0;
   double ns_per_number = 0;          // generator call, calibrated in a batch loop like the pair loop's
   double ns_per_zeta = 0;            // distribution transform (Box–Muller or √3(2u−1))
   // Water: the RNG's share of a step, by difference against ζ = 0 on the final state (rng_share_by_difference).

@@ -62,6 +62,7 @@ class SceneObserver {
 struct ForceCounters {
   double seconds = 0;
   std::uint64_t numbers = 0, zetas = 0;
+  std::uint64_t pairs = 0, candidates = 0;  // pairs inside r_c (ζ = 0 runs too); candidates the search visited
 };
 
 struct SceneRun {
