@@ -5,7 +5,6 @@
 
 #include "dpdrng/study/decomposition_sweep.hpp"
 #include "dpdrng/study/h5.hpp"
-#include "dpdrng/version.hpp"
 
 namespace dpdrng::study {
 using namespace dpdrng::dpd;
@@ -183,12 +182,7 @@ std::vector<DecompResult> load_decomp_cell(const CellStore& store, const DecompC
 }
 
 std::size_t assemble_decomp_store(const CellStore& store, const DecompSweep& sweep) {
-  return store.assemble({{"study", sweep.name},
-                         {"description", sweep.description},
-                         {"config_toml", sweep.source_text},
-                         {"config_canonical_json", sweep.canonical().dump()},
-                         {"config_hash", sweep.hash},
-                         {"dpdrng_version", std::string(dpdrng::kVersion)}},
+  return store.assemble({sweep.name, sweep.description, sweep.source_text, sweep.canonical().dump(), sweep.hash},
                         [](hid_t g) { return read_decomp_rows(g, nullptr); });
 }
 

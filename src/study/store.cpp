@@ -165,7 +165,13 @@ void CellStore::save(const std::string& id, const Writer& write) const {
   write_file_atomically(p, bytes);
 }
 
-std::size_t CellStore::assemble(const std::map<std::string, h5::Attribute>& attributes, const Reader& read) const {
+std::size_t CellStore::assemble(const StoreIdentity& identity, const Reader& read) const {
+  const std::map<std::string, h5::Attribute> attributes{{"study", identity.study},
+                                                        {"description", identity.description},
+                                                        {"config_toml", identity.config_toml},
+                                                        {"config_canonical_json", identity.config_canonical_json},
+                                                        {"config_hash", identity.config_hash},
+                                                        {"dpdrng_version", std::string(dpdrng::kVersion)}};
   std::size_t n = 0;
   std::string bytes;
   {
@@ -282,12 +288,7 @@ std::vector<CellResult> Store::load_all(std::vector<UnreadableCell>* unreadable)
 }
 
 std::size_t Store::assemble(const StudyConfig& config) const {
-  return cells_.assemble({{"study", config.name},
-                          {"description", config.description},
-                          {"config_toml", config.source_text},
-                          {"config_canonical_json", config.canonical().dump()},
-                          {"config_hash", config.hash},
-                          {"dpdrng_version", std::string(dpdrng::kVersion)}},
+  return cells_.assemble({config.name, config.description, config.source_text, config.canonical().dump(), config.hash},
                          [](hid_t g) { return store_files::read_study_cell(g, nullptr); });
 }
 

@@ -25,6 +25,16 @@ struct UnreadableCell {
   std::string reason;
 };
 
+// What an assembled store says about itself on its root: the study, the config that made it (as written, in
+// canonical form and its hash) and the dpdrng version.
+struct StoreIdentity {
+  std::string study;
+  std::string description;
+  std::string config_toml;
+  std::string config_canonical_json;
+  std::string config_hash;
+};
+
 class CellStore {
  public:
   explicit CellStore(std::filesystem::path dir) : dir_(std::move(dir)) {}
@@ -48,9 +58,9 @@ class CellStore {
   // The cell files present (hidden temporaries left by a killed run excluded), in name order.
   std::vector<std::filesystem::path> files() const;
 
-  // Writes study.h5 atomically: `attributes` on its root, and a copy of every whole cell of this config under
+  // Writes study.h5 atomically: the identity on its root, and a copy of every whole cell of this config under
   // /cells/<id>, with the units of the cells' scalars under /units; returns the number of cells in it.
-  std::size_t assemble(const std::map<std::string, h5::Attribute>& attributes, const Reader& read) const;
+  std::size_t assemble(const StoreIdentity& identity, const Reader& read) const;
   // Copies the cells of `other` that this store lacks; both must hold the same config. A cell file that is
   // unreadable or filed under another cell's name is not copied (listed in *refused when given).
   std::size_t merge_from(const CellStore& other, const Reader& read, std::vector<UnreadableCell>* refused) const;
