@@ -23,7 +23,7 @@ run() {  # run NAME ARGS...: one rank; on failure, the run's log
 }
 fail=0
 
-run water -in "$here/../../lammps/examples/in.water" -sf omp -pk omp 2 -var N "$n" -var nequil 200 -var nsteps 600 \
+run water -in "$here/../../lammps/examples/in.water" -sf omp -pk omp 2 -var N "$n" -var nequil 100 -var nsteps 400 \
   -var nblocks 2 -var gen tea32 -var rounds 1 -var seeding distance -var feed halves
 grep -q 'dpd/hash/omp' log.water || { echo "omp.sh: in.water did not run dpd/hash/omp" >&2; exit 1; }
 grep -Eq '^ *Step +Temp ' log.water || { echo "omp.sh: no thermo header in the omp run of in.water" >&2; exit 1; }
