@@ -13,6 +13,7 @@
 // blocks or inverse (how uniforms become a Gaussian); seed: the pair-step seed (any 64-bit integer).
 // `zeta FILE STEP` writes, at time step STEP only, one line per pair this rank evaluates into FILE.<rank>:
 // the two tags (lower first), whether the pair has a ghost, and ζ as its IEEE-754 bits: a check, not output.
+// pair_style dpd/hash/omp (pair_dpd_hash_omp.h) runs the same pair loop on LAMMPS's OpenMP threads.
 #pragma once
 
 #include <cstdint>
