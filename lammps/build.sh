@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# Builds lmp_dpdrng into build/lammps/: LAMMPS from Debian's source package (a static liblammps with MPI and
-# DPD-BASIC, nothing else) plus pair_style dpd/hash (lammps/src/), linked against the dpdrng installed from
-# build/release. The LAMMPS library is kept outside the clone, in ${DPDRNG_LAMMPS_CACHE:-/var/cache/dpdrng/lammps},
-# in a folder named by the Debian source version and a hash of everything that shapes it (the configure options,
-# the compiler, the MPI); a second run finds it and only compiles our style and the launcher (seconds).
+# Builds lmp_dpdrng into build/lammps/: LAMMPS from Debian's source package (a static liblammps with MPI, OpenMP,
+# DPD-BASIC and OPENMP, nothing else) plus pair_style dpd/hash and dpd/hash/omp (lammps/src/), linked against the
+# dpdrng installed from build/release. The LAMMPS library is kept outside the clone, in
+# ${DPDRNG_LAMMPS_CACHE:-/var/cache/dpdrng/lammps}, in a folder named by the Debian source version and a hash of
+# everything that shapes it (the configure options, the compiler, the MPI); a second run finds it and only compiles our
+# style and the launcher (seconds).
 # Needs: ./study/install-deps.sh lammps (OpenMPI, dpkg-dev, a deb-src entry) and a configured build/release.
 # Prints the launcher's path on its last line. DPDRNG_JOBS sets the build's parallelism (default: nproc);
 # DPDRNG_LAMMPS_STYLE_FLAGS adds compiler flags for the style alone, e.g. -march=x86-64-v3: dpdrng's one-word
@@ -21,10 +22,10 @@ version=$(apt-cache showsrc lammps 2>/dev/null | sed -n 's/^Version: //p' | sort
 # Everything that changes the library's objects or its ABI goes into the key. -O2 as in Debian's own build;
 # lmp_dpdrng compiles our style with the same flags so that the cost comparison with pair_style dpd is fair.
 opt_flags="-O2 -DNDEBUG"
-lmp_options=(-D CMAKE_BUILD_TYPE=Release "-D CMAKE_CXX_FLAGS_RELEASE=$opt_flags" -D BUILD_MPI=on -D BUILD_OMP=off
+lmp_options=(-D CMAKE_BUILD_TYPE=Release "-D CMAKE_CXX_FLAGS_RELEASE=$opt_flags" -D BUILD_MPI=on -D BUILD_OMP=on
              -D BUILD_SHARED_LIBS=off -D LAMMPS_SIZES=smallbig -D LAMMPS_EXCEPTIONS=off -D PKG_DPD-BASIC=on
-             -D WITH_JPEG=off -D WITH_PNG=off -D WITH_GZIP=off -D WITH_FFMPEG=off -D BUILD_TOOLS=off
-             -D BUILD_DOC=off -D ENABLE_TESTING=off)
+             -D PKG_OPENMP=on -D WITH_JPEG=off -D WITH_PNG=off -D WITH_GZIP=off -D WITH_FFMPEG=off
+             -D BUILD_TOOLS=off -D BUILD_DOC=off -D ENABLE_TESTING=off)
 key=$( { echo "$version"; printf '%s\n' "${lmp_options[@]}"; c++ --version | head -1; mpicxx --showme:version 2>&1 || true; } |
        sha256sum | cut -c1-16)
 dir="$cache/${version//[^A-Za-z0-9.+-]/_}-$key"

@@ -29,7 +29,7 @@ namespace rng = dpdrng::rng;
 // The pair loop behind a virtual call: one instantiation of eval per noise type, chosen once in settings().
 struct PairDPDHash::Kernel {
   virtual ~Kernel() = default;
-  virtual void run(PairDPDHash &pair, int eflag, int vflag) const = 0;
+  virtual void run(PairDPDHash &pair, int ifrom, int ito, double **f, const Tally &tally, std::FILE *zf) const = 0;
 };
 
 namespace dpd_hash {
@@ -40,7 +40,10 @@ constexpr double kMinDistance = 1.0e-10;
 template <class Noise>
 struct KernelOf final : PairDPDHash::Kernel {
   explicit KernelOf(Noise n) : noise(std::move(n)) {}
-  void run(PairDPDHash &pair, int eflag, int vflag) const override { pair.eval(noise, eflag, vflag); }
+  void run(PairDPDHash &pair, int ifrom, int ito, double **f, const PairDPDHash::Tally &tally,
+           std::FILE *zf) const override {
+    pair.eval(noise, ifrom, ito, f, tally, zf);
+  }
   Noise noise;
 };
 
@@ -111,22 +114,37 @@ void PairDPDHash::allocate() {
     for (int j = 0; j <= n; j++) setflag[i][j] = 0, cut[i][j] = a0[i][j] = gamma[i][j] = sigma[i][j] = 0.0;
 }
 
-void PairDPDHash::compute(int eflag, int vflag) {
-  if (!kernel) error->all(FLERR, "pair_style dpd/hash: no noise set (pair_style arguments missing)");
-  kernel->run(*this, eflag, vflag);
+namespace dpd_hash {
+
+// The serial style's tallies: Pair's own energy and virial sums.
+struct PairTally final : PairDPDHash::Tally {
+  explicit PairTally(PairDPDHash &p) : pair(p) {}
+  void operator()(int i, int j, double evdwl, double fpair, double delx, double dely, double delz) const override {
+    pair.tally(i, j, evdwl, fpair, delx, dely, delz);
+  }
+  PairDPDHash &pair;
+};
+
+}  // namespace dpd_hash
+
+void PairDPDHash::tally(int i, int j, double evdwl, double fpair, double delx, double dely, double delz) {
+  ev_tally(i, j, atom->nlocal, force->newton_pair, evdwl, 0.0, fpair, delx, dely, delz);
 }
 
-template <class Noise>
-void PairDPDHash::eval(const Noise &noise, int eflag, int vflag) {
+void PairDPDHash::compute(int eflag, int vflag) {
   ev_init(eflag, vflag);
-  double **x = atom->x, **v = atom->v, **f = atom->f;
-  const int *type = atom->type;
-  const tagint *tag = atom->tag;
-  const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
-  const double *special_lj = force->special_lj;
-  const double dtinvsqrt = 1.0 / std::sqrt(update->dt);
-  const auto step = std::uint64_t(update->ntimestep);
+  std::FILE *zf = prepare();
+  run_kernel(0, list->inum, atom->f, dpd_hash::PairTally(*this), zf);
+  if (zf) std::fclose(zf);
+  if (vflag_fdotr) virial_fdotr_compute();
+}
 
+void PairDPDHash::run_kernel(int ifrom, int ito, double **f, const Tally &tally, std::FILE *zf) {
+  kernel->run(*this, ifrom, ito, f, tally, zf);
+}
+
+std::FILE *PairDPDHash::prepare() {
+  if (!kernel) error->all(FLERR, "pair_style dpd/hash: no noise set (pair_style arguments missing)");
   if (canonical) {
     // Every atom's owner coordinates, ghosts included: the ghosts' come from their owners by forward comm,
     // unshifted (a shifted and unshifted-back coordinate need not equal the owner's bits).
@@ -135,25 +153,34 @@ void PairDPDHash::eval(const Noise &noise, int eflag, int vflag) {
       nmax_owner = atom->nmax;
       memory->create(xowner, nmax_owner, 3, "pair:xowner");
     }
-    for (int i = 0; i < nlocal; i++) xowner[i][0] = x[i][0], xowner[i][1] = x[i][1], xowner[i][2] = x[i][2];
+    double **x = atom->x;
+    for (int i = 0; i < atom->nlocal; i++) xowner[i][0] = x[i][0], xowner[i][1] = x[i][1], xowner[i][2] = x[i][2];
     comm->forward_comm_pair(this);
   }
+  if (zeta_file.empty() || zeta_written || update->ntimestep != zeta_step) return nullptr;
+  const std::string name = zeta_file + "." + std::to_string(comm->me);
+  std::FILE *zf = std::fopen(name.c_str(), "w");
+  if (!zf) error->one(FLERR, "pair_style dpd/hash: cannot write {}: {}", name, std::strerror(errno));
+  zeta_written = true;
+  return zf;
+}
+
+template <class Noise>
+void PairDPDHash::eval(const Noise &noise, int ifrom, int ito, double **f, const Tally &tally, std::FILE *zf) {
+  double **x = atom->x, **v = atom->v;
+  const int *type = atom->type;
+  const tagint *tag = atom->tag;
+  const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
+  const double *special_lj = force->special_lj;
+  const double dtinvsqrt = 1.0 / std::sqrt(update->dt);
+  const auto step = std::uint64_t(update->ntimestep);
   const bool px = domain->xperiodic, py = domain->yperiodic, pz = domain->zperiodic;
   const double lx = domain->xprd, ly = domain->yprd, lz = domain->zprd;
   const double hx = domain->xprd_half, hy = domain->yprd_half, hz = domain->zprd_half;
 
-  FILE *zf = nullptr;
-  if (!zeta_file.empty() && !zeta_written && update->ntimestep == zeta_step) {
-    const std::string name = zeta_file + "." + std::to_string(comm->me);
-    zf = std::fopen(name.c_str(), "w");
-    if (!zf) error->one(FLERR, "pair_style dpd/hash: cannot write {}: {}", name, std::strerror(errno));
-    zeta_written = true;
-  }
-
-  const int inum = list->inum;
   const int *ilist = list->ilist, *numneigh = list->numneigh;
   int **firstneigh = list->firstneigh;
-  for (int ii = 0; ii < inum; ii++) {
+  for (int ii = ifrom; ii < ito; ii++) {
     const int i = ilist[ii];
     const double xi = x[i][0], yi = x[i][1], zi = x[i][2];
     const double vxi = v[i][0], vyi = v[i][1], vzi = v[i][2];
@@ -204,13 +231,12 @@ void PairDPDHash::eval(const Noise &noise, int eflag, int vflag) {
       fpair *= factor_dpd * rinv;
       f[i][0] += delx * fpair, f[i][1] += dely * fpair, f[i][2] += delz * fpair;
       if (newton_pair || j < nlocal) f[j][0] -= delx * fpair, f[j][1] -= dely * fpair, f[j][2] -= delz * fpair;
-      double evdwl = 0.0;
-      if (eflag) evdwl = 0.5 * a0[itype][jtype] * cut[itype][jtype] * w * w * factor_dpd;
-      if (evflag) ev_tally(i, j, nlocal, newton_pair, evdwl, 0.0, fpair, delx, dely, delz);
+      if (evflag) {
+        const double evdwl = eflag_either ? 0.5 * a0[itype][jtype] * cut[itype][jtype] * w * w * factor_dpd : 0.0;
+        tally(i, j, evdwl, fpair, delx, dely, delz);
+      }
     }
   }
-  if (zf) std::fclose(zf);
-  if (vflag_fdotr) virial_fdotr_compute();
 }
 
 void PairDPDHash::settings(int narg, char **arg) {

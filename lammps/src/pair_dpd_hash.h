@@ -13,6 +13,7 @@
 // blocks or inverse (how uniforms become a Gaussian); seed: the pair-step seed (any 64-bit integer).
 // `zeta FILE STEP` writes, at time step STEP only, one line per pair this rank evaluates into FILE.<rank>:
 // the two tags (lower first), whether the pair has a ghost, and ζ as its IEEE-754 bits: a check, not output.
+// pair_style dpd/hash/omp (pair_dpd_hash_omp.h) runs the same pair loop on LAMMPS's OpenMP threads.
 #pragma once
 
 #include <cstdint>
@@ -38,11 +39,23 @@ class PairDPDHash : public Pair {
   void unpack_forward_comm(int, int, double *) override;
   double memory_usage() override;
 
-  // The pair loop for one noise type (the generator, seeding and distribution as constants).
+  // Where the pair loop's energy and virial go on the steps that tally them: Pair's own sums, or one thread's
+  // (the /omp variant). A virtual call per pair on those steps only.
+  struct Tally {
+    virtual ~Tally() = default;
+    virtual void operator()(int i, int j, double evdwl, double fpair, double delx, double dely,
+                            double delz) const = 0;
+  };
+
+  // The pair loop for one noise type (the generator, seeding and distribution as constants), over the entries
+  // ifrom .. ito-1 of the neighbour list, into the force array f (LAMMPS's, or a thread's). Called after
+  // ev_init() and prepare(); zf: the zeta check's file, or null.
   template <class Noise>
-  void eval(const Noise &noise, int eflag, int vflag);
+  void eval(const Noise &noise, int ifrom, int ito, double **f, const Tally &tally, std::FILE *zf);
 
   struct Kernel;
+  // Pair's own energy and virial tally for one pair (the serial Tally).
+  void tally(int i, int j, double evdwl, double fpair, double delx, double dely, double delz);
 
  protected:
   double temperature = 0.0, cut_global = 0.0;
@@ -57,6 +70,10 @@ class PairDPDHash : public Pair {
 
   void allocate();
   void release();
+  // Before a force evaluation: the ghosts' owner coordinates (canonical seeding), and the zeta check's file when
+  // this is its step (null otherwise; the caller closes it).
+  std::FILE *prepare();
+  void run_kernel(int ifrom, int ito, double **f, const Tally &tally, std::FILE *zf);
 };
 
 }  // namespace LAMMPS_NS

@@ -3,7 +3,10 @@
 // (no generator, no distribution) and with the seed words passed unhashed (no generator), and the paper's
 // headline: the all-pairs 256-bead run with tea32(8) against tea32(1) (Okada et al. 2021: RNG 40 % of the
 // time at 8 rounds, 1.5x faster at 1 round). The cells-mode 1- vs 2-thread comparison runs any one integrator;
-// a list of integrators times each one's step against GW-MVV's, the runs interleaved.
+// a list of integrators times each one's step against GW-MVV's, the runs interleaved. When LAMMPS is built
+// (lmp_dpdrng: --lammps, build/lammps/ or PATH), the cells scene also runs in LAMMPS, with its own pair_style dpd
+// and with pair_style dpd/hash, in turn with dpdrng's tea32(1) run, and the table gives each cells row's speed
+// against LAMMPS's.
 #include <unistd.h>
 
 #include <algorithm>
@@ -22,6 +25,7 @@
 #include "dpdrng/common/machine.hpp"
 #include "dpdrng/dpd/water.hpp"
 #include "dpdrng/stats/summary.hpp"
+#include "bench_dpd_lammps.hpp"
 #include "dpdrng/version.hpp"
 
 namespace dpdrng::cli {
@@ -39,6 +43,8 @@ struct BenchDpdArgs {
   int threads = 1;
   int repeat = 3;
   bool paper = false, json = false, scaling = true, scaling_only = false, oversubscribe = false;
+  std::string lammps;  // lmp_dpdrng's path; empty: looked for
+  bool no_lammps = false;
 };
 
 struct Case {
@@ -52,6 +58,10 @@ struct PairCost {
   double pairs_per_step = 0;       // pairs inside r_c per force evaluation, the run's mean
   double candidates_per_pair = 0;  // candidates visited per pair kept
   double ns_per_pair = 0;          // median production time per step / pairs_per_step
+  // This run's particle-steps/s over LAMMPS's pair_style dpd's on the same scene and CPU; nullopt: not
+  // applicable, for the reason in lammps_not_applicable.
+  std::optional<double> dpdrng_over_lammps;
+  std::string lammps_not_applicable;
 };
 
 struct Measured {
@@ -266,7 +276,10 @@ nlohmann::json to_json(const Measured& m) {
           {"pair_steps_per_s", m.pair_steps_per_s},
           {"pairs_per_step", m.cost.pairs_per_step}, {"ns_per_pair", m.cost.ns_per_pair},
           {"candidates_per_pair", m.cost.candidates_per_pair},
-          {"rng_share_estimate", m.share_estimate}};
+          {"rng_share_estimate", m.share_estimate},
+          {"dpdrng_over_lammps", m.cost.dpdrng_over_lammps ? nlohmann::json(*m.cost.dpdrng_over_lammps) : nullptr},
+          {"dpdrng_over_lammps_not_applicable",
+           m.cost.dpdrng_over_lammps ? nlohmann::json(nullptr) : nlohmann::json(m.cost.lammps_not_applicable)}};
 }
 
 std::vector<Measured> measure_table(const BenchDpdArgs& a) {
@@ -324,7 +337,8 @@ void print_table(const BenchDpdArgs& a, const std::vector<Measured>& table) {
                "computed per pair kept\n";
   std::cout << std::left << std::setw(7) << "pairs" << std::setw(9) << "beads" << std::setw(20) << "noise"
             << std::right << std::setw(14) << "p-steps/s" << std::setw(10) << "ns/pair" << std::setw(11)
-            << "cand/pair" << std::setw(12) << "vs none" << std::setw(12) << "in-run" << "\n";
+            << "cand/pair" << std::setw(12) << "vs none" << std::setw(12) << "in-run" << std::setw(11) << "vs LAMMPS"
+            << "\n";
   double none_s = 0;
   for (const auto& m : table) {
     if (m.label.rfind("none", 0) == 0) none_s = m.median_s;
@@ -332,8 +346,22 @@ void print_table(const BenchDpdArgs& a, const std::vector<Measured>& table) {
               << std::right << std::setw(14) << std::setprecision(4) << m.particle_steps_per_s << std::fixed
               << std::setprecision(1) << std::setw(10) << m.cost.ns_per_pair << std::setw(11)
               << m.cost.candidates_per_pair << std::setw(11) << 100 * (m.median_s - none_s) / m.median_s << "%"
-              << std::setw(11) << 100 * m.share_estimate << "%" << std::defaultfloat << "\n";
+              << std::setw(11) << 100 * m.share_estimate << "%" << std::setprecision(2) << std::setw(11);
+    if (m.cost.dpdrng_over_lammps)
+      std::cout << *m.cost.dpdrng_over_lammps;
+    else
+      std::cout << "n/a";
+    std::cout << std::defaultfloat << "\n";
   }
+  // Each scene's reason once: the rows of one scene share it.
+  std::vector<std::pair<std::string, std::string>> reasons;
+  for (const auto& m : table)
+    if (!m.cost.dpdrng_over_lammps && std::find(reasons.begin(), reasons.end(), std::pair(m.pairs,
+                                                m.cost.lammps_not_applicable)) == reasons.end())
+      reasons.emplace_back(m.pairs, m.cost.lammps_not_applicable);
+  std::cout << "vs LAMMPS: the row's particle-steps/s over LAMMPS's pair_style dpd's on the same scene (below)";
+  for (const auto& [pairs, why] : reasons) std::cout << "; " << pairs << ": not applicable: " << why;
+  std::cout << "\n";
 }
 
 void print_paper(const BenchDpdArgs& a, const Paper& p) {
@@ -484,11 +512,36 @@ nlohmann::json to_json(const IntegratorCost& c) {
   return out;
 }
 
+// The cells scene beside LAMMPS when the table has it and LAMMPS was found, and each row's speed against LAMMPS's
+// pair_style dpd (not applicable, with the reason, for the all-pairs rows and when LAMMPS has no figures).
+bench_dpd_lammps::Side beside_lammps(const BenchDpdArgs& a, const std::optional<std::string>& launcher,
+                                     const std::string& why, std::vector<Measured>& table) {
+  const auto modes = split(a.pairs);
+  const bool cells = std::find(modes.begin(), modes.end(), "cells") != modes.end();
+  bench_dpd_lammps::Side side = bench_dpd_lammps::not_applicable(cells ? why : "no cells scene in --pairs");
+  if (cells && launcher) {
+    const Case tea1 = with_generator(scene(a, dpd::PairMode::cells, a.steps_cells), "tea32", 1);
+    side = bench_dpd_lammps::measure(*launcher, tea1.cfg, a.distribution, a.feed, a.threads, a.repeat,
+                                     [&] { return run_once(tea1).production_s; });
+  }
+  for (auto& m : table) {
+    if (m.pairs != "cells") {
+      m.cost.lammps_not_applicable = "LAMMPS runs the cells scene only";
+    } else if (side.measured()) {
+      m.cost.dpdrng_over_lammps = m.particle_steps_per_s / side.own_ps;
+    } else {
+      m.cost.lammps_not_applicable = side.not_applicable;
+    }
+  }
+  return side;
+}
+
 void run_bench_dpd(const BenchDpdArgs& a) {
   if (a.repeat < 1) throw InputError("--repeat must be at least 1");
   if (a.threads < 1) throw InputError("--threads must be at least 1");
   if (a.steps_all < 1 || a.steps_cells < 1) throw InputError("--steps-all and --steps-cells must be at least 1");
   if (a.scaling_only && !a.scaling) throw InputError("--scaling-only and --no-scaling exclude each other");
+  if (!a.lammps.empty() && a.no_lammps) throw InputError("--lammps and --no-lammps exclude each other");
   if (a.oversubscribe && a.scaling_only) throw InputError("--oversubscribe and --scaling-only exclude each other");
   const bool compare = split(a.integrator).size() > 1;
   if (split(a.integrator).empty()) throw InputError("--integrator: name at least one integrator");
@@ -511,6 +564,8 @@ void run_bench_dpd(const BenchDpdArgs& a) {
   for (const auto& p : split(a.pairs)) dpd::parse_pair_mode(p);
   rng::check_feed(rng::parse_distribution(a.distribution), rng::parse_feed(a.feed));
   for (const auto& g : split(a.generators)) rng::find_generator(g);  // InputError for unknown names
+  std::string lammps_why;
+  const auto launcher = bench_dpd_lammps::locate(a.lammps, a.no_lammps, lammps_why);  // InputError: bad --lammps
   begin_work();
 
   nlohmann::json out;
@@ -542,7 +597,9 @@ void run_bench_dpd(const BenchDpdArgs& a) {
     print_oversubscription(rows);
     return;
   }
-  const std::vector<Measured> table = a.scaling_only ? std::vector<Measured>{} : measure_table(a);
+  std::vector<Measured> table = a.scaling_only ? std::vector<Measured>{} : measure_table(a);
+  std::optional<bench_dpd_lammps::Side> beside;
+  if (!a.scaling_only) beside = beside_lammps(a, launcher, lammps_why, table);
   const Paper paper = a.scaling_only ? Paper{} : measure_paper(a);
   std::optional<Scaling> scaling;
   if (a.scaling)
@@ -551,6 +608,7 @@ void run_bench_dpd(const BenchDpdArgs& a) {
 
   if (a.json) {
     for (const auto& m : table) out["throughput"].push_back(to_json(m));
+    if (beside) out["lammps"] = bench_dpd_lammps::to_json(*beside);
     if (!a.scaling_only)
       out["paper"] = {{"steps", paper.steps},
                       {"tea32_8_s", paper.t8.median_s},
@@ -573,6 +631,7 @@ void run_bench_dpd(const BenchDpdArgs& a) {
   }
   std::cout << cpu_model() << ", " << simd_width_bits() << "-bit SIMD (" << simd_name() << ")\n";
   if (!a.scaling_only) print_table(a, table), print_paper(a, paper);
+  if (beside) bench_dpd_lammps::print(*beside);
   if (scaling) print_scaling(a, *scaling);
 }
 
@@ -607,6 +666,12 @@ const bool registered = register_command(62, [](CLI::App& root) {
                 "only this: the paper scene (--steps-all) and the cells scene (--steps-cells) with one and two "
                 "threads alternately (--repeat pairs) beside a busy loop that bench dpd starts on a thread of its "
                 "own, and each two-thread time against the one-thread time");
+  sub->add_option("--lammps", a->lammps,
+                  "lmp_dpdrng (lammps/build.sh) to run the cells scene in LAMMPS beside dpdrng: pair_style dpd and "
+                  "pair_style dpd/hash tea32 1, in turn with dpdrng's tea32(1), --repeat rounds, 1 rank, --threads "
+                  "OpenMP threads (-sf omp); default: build/lammps/lmp_dpdrng under the working folder, else "
+                  "lmp_dpdrng on PATH, else the comparison is not applicable");
+  sub->add_flag("--no-lammps", a->no_lammps, "do not run LAMMPS even when it is found");
   sub->add_flag("--json", a->json, "machine-readable output");
   sub->callback([a] { run_bench_dpd(*a); });
 });
