@@ -48,6 +48,27 @@ void sort_by_key(InRangeTap& tap) {
   tap.keys.swap(sorted.keys), tap.words.swap(sorted.words), tap.zeta.swap(sorted.zeta);
 }
 
+}  // namespace
+
+// Copies between the System's order and the sorted order; restrict lets each pass vectorise (gathers, scatters).
+namespace permuted {
+
+template <class T>
+void gather(const std::uint32_t* __restrict order, std::uint32_t lo, std::uint32_t hi, const T* __restrict from,
+            T* __restrict to) {
+  for (std::uint32_t k = lo; k < hi; ++k) to[k] = from[order[k]];
+}
+
+template <class T>
+void scatter(const std::uint32_t* __restrict order, std::uint32_t lo, std::uint32_t hi, const T* __restrict from,
+             T* __restrict to) {
+  for (std::uint32_t k = lo; k < hi; ++k) to[order[k]] = from[k];
+}
+
+}  // namespace permuted
+
+namespace {
+
 // What the cells loop's second pass adds up for each pair inside r_c: the force on the own bead s·d, the
 // conservative weight and w (DpdKernel::evaluate's and conservative_weight's values).
 struct PairTerms {
@@ -370,19 +391,24 @@ class PairLoop final : public PairForces {
 
   // Sorted copies of what the pairs read (positions, the dissipative force's velocities, types),
   // and zeroed sorted forces, by the team of the sort: each thread copies the beads of the layers it will own
-  // (own_layers), so they start in its cache. Each sorted slot is written once.
+  // (own_layers), so they start in its cache. Each sorted slot is written once. One array at a time: a pass
+  // reads one System array at random and writes one sorted array in sequence, which both stay in L2 at
+  // 24 000 beads, where the seven arrays read at once (and the ten written) do not.
   void gather(const System& s, VelocityView v, bool conf) {
     const auto [z0, z1] = own_layers(omp_get_thread_num(), omp_get_num_threads());
     const int per_layer = cells_.layer_cells();
     const std::uint32_t* order = cells_.order().data();
-    for (std::uint32_t k = cells_.begin(z0 * per_layer), e = cells_.begin(z1 * per_layer); k < e; ++k) {
-      const std::uint32_t i = order[k];
-      xs_[k] = s.x[i], ys_[k] = s.y[i], zs_[k] = s.z[i];
-      vxs_[k] = v.vx[i], vys_[k] = v.vy[i], vzs_[k] = v.vz[i];
-      fxs_[k] = 0, fys_[k] = 0, fzs_[k] = 0;
-      if (conf) fcx_[k] = 0, fcy_[k] = 0, fcz_[k] = 0;
-      types_[k] = s.type[i];
-    }
+    const std::uint32_t lo = cells_.begin(z0 * per_layer), hi = cells_.begin(z1 * per_layer);
+    permuted::gather(order, lo, hi, s.x.data(), xs_.data());
+    permuted::gather(order, lo, hi, s.y.data(), ys_.data());
+    permuted::gather(order, lo, hi, s.z.data(), zs_.data());
+    permuted::gather(order, lo, hi, v.vx, vxs_.data());
+    permuted::gather(order, lo, hi, v.vy, vys_.data());
+    permuted::gather(order, lo, hi, v.vz, vzs_.data());
+    permuted::gather(order, lo, hi, s.type.data(), types_.data());
+    for (double* f : {fxs_.data(), fys_.data(), fzs_.data()}) std::fill(f + lo, f + hi, 0.0);
+    if (conf)
+      for (double* f : {fcx_.data(), fcy_.data(), fcz_.data()}) std::fill(f + lo, f + hi, 0.0);
   }
 
   // Thread t of nt owns a contiguous block of layers: its layers' writes to the next layer then stay on the
@@ -725,17 +751,19 @@ class PairLoop final : public PairForces {
     wait_until([&] { return done.load(std::memory_order_acquire) != 0; });
   }
 
-  // One of layer z's two contributors is done; the thread completing the second scatters the layer.
+  // One of layer z's two contributors is done; the thread completing the second scatters the layer, one array
+  // at a time (as gather).
   void contributed(System& s, int z, bool conf) {
     if (std::atomic_ref<int>(pending_[z]).fetch_sub(1, std::memory_order_acq_rel) != 1) return;
     const int per_layer = cells_.layer_cells();
     const std::uint32_t* order = cells_.order().data();
+    const std::uint32_t lo = cells_.begin(z * per_layer), hi = cells_.end((z + 1) * per_layer - 1);
+    permuted::scatter(order, lo, hi, fxs_.data(), s.fx.data());
+    permuted::scatter(order, lo, hi, fys_.data(), s.fy.data());
+    permuted::scatter(order, lo, hi, fzs_.data(), s.fz.data());
     double force2 = 0;
-    for (std::uint32_t k = cells_.begin(z * per_layer), e = cells_.end((z + 1) * per_layer - 1); k < e; ++k) {
-      const std::uint32_t i = order[k];
-      s.fx[i] = fxs_[k], s.fy[i] = fys_[k], s.fz[i] = fzs_[k];
-      if (conf) force2 += fcx_[k] * fcx_[k] + fcy_[k] * fcy_[k] + fcz_[k] * fcz_[k];
-    }
+    if (conf)
+      for (std::uint32_t k = lo; k < hi; ++k) force2 += fcx_[k] * fcx_[k] + fcy_[k] * fcy_[k] + fcz_[k] * fcz_[k];
     layer_force2_[std::size_t(z)] = force2;
   }
 
