@@ -257,13 +257,52 @@ class PairLoop final : public PairForces {
     const PairBatch b{sc.pi.data(), sc.j.data(), off, sc.dx.data(), sc.dy.data(), sc.dz.data(), c.step, 0,
                       {nullptr, nullptr}, sc.zeta.data(), c.in_tap ? used_room(sc, off) : nullptr};
     noise_->pairs(b, thread);
+    // One bead type and no configurational sums: the group's pair terms in one vectorised pass, then each
+    // row's sums over them (row_sums), as in cells mode.
+    const bool terms = !c.conf && k_.ntypes == 1;
+    if (terms)
+      pair_terms<false>(sc.dx.data(), sc.dy.data(), sc.dz.data(), sc.r2.data(), sc.zeta.data(), sc.pi.data(),
+                        sc.j.data(), c.v.vx, c.v.vy, c.v.vz, k_.a[0], k_, 0, off, sc.gx.data(), sc.gy.data(),
+                        sc.gz.data(), sc.cw.data(), sc.w.data());
     off = 0;
     for (std::uint32_t i = i0; i < i1; ++i) {
       const std::size_t k = sc.counts[i - i0];
       if (c.in_tap) record_row(i, k, sc, off);
-      forces<false>(c, i, k, sc, off, rows_[i]);
+      if (terms)
+        row_sums(c, i, k, sc, off, rows_[i]);
+      else
+        forces<false>(c, i, k, sc, off, rows_[i]);
       off += k;
     }
+  }
+
+  // Row i's forces from the terms pair_terms left in sc for its m pairs from `off` on (one bead type, no
+  // configurational sums): forces<false, false>'s sums over the same values in the same order, so the same bits.
+  void row_sums(const Ctx& c, std::uint32_t i, std::size_t m, const Scratch& sc, std::size_t off, Row& row) {
+    double fx = 0, fy = 0, fz = 0, w0 = 0, w1 = 0, w2 = 0, c0 = 0, c1 = 0, c2 = 0, ww = 0, wwzz = 0;
+    double min_r2 = k_.rc2();
+    if (row.rec.size() < m) row.rec.resize(m);
+    row.zeta = ZetaSums{};
+    if (c.tap_zeta) row.zeta.add(sc.zeta.data() + off, m);
+    for (std::size_t p = off; p < off + m; ++p) {
+      const double dx = sc.dx[p], dy = sc.dy[p], dz = sc.dz[p], r2 = sc.r2[p], zeta = sc.zeta[p];
+      const double gx = sc.gx[p], gy = sc.gy[p], gz = sc.gz[p], cw = sc.cw[p];
+      fx += gx, fy += gy, fz += gz;
+      w0 -= gx * dx, w1 -= gy * dy, w2 -= gz * dz;
+      c0 += cw * dx * dx, c1 += cw * dy * dy, c2 += cw * dz * dz;
+      row.rec[p - off] = {sc.j[p], gx, gy, gz};
+      const double w2p = sc.w[p] * sc.w[p];
+      ww += w2p, wwzz += w2p * zeta * zeta;
+      min_r2 = std::min(min_r2, r2);
+    }
+    c.s.fx[i] = fx, c.s.fy[i] = fy, c.s.fz[i] = fz;
+    fcx_[i] = 0, fcy_[i] = 0, fcz_[i] = 0;
+    row.laplacian = 0;
+    if (c.tap_zeta) row.zeta.w2 = ww, row.zeta.w2z2 = wwzz;
+    row.count = static_cast<std::uint32_t>(m);
+    row.w[0] = w0, row.w[1] = w1, row.w[2] = w2;
+    row.wc[0] = c0, row.wc[1] = c1, row.wc[2] = c2;
+    row.min_r2 = min_r2;
   }
 
   // Pass 2: forces for the m in-range pairs held in sc from pair `off` on (partners sc.j, ζ in sc.zeta unless
