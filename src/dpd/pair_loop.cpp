@@ -246,10 +246,9 @@ class PairLoop final : public PairForces {
     for (std::uint32_t i = i0; i < i1; ++i) {
       const std::size_t m = n - i - 1;
       sc.grow_pairs(off + m);
-      double *dx = sc.dx.data() + off, *dy = sc.dy.data() + off, *dz = sc.dz.data() + off, *r2 = sc.r2.data() + off;
-      geometry(s.x.data() + i + 1, s.y.data() + i + 1, s.z.data() + i + 1, s.x[i], s.y[i], s.z[i], s.box, m, dx, dy,
-               dz, r2);
-      const std::size_t k = compact_in_range(i + 1, m, rc2, dx, dy, dz, r2, sc.j.data() + off);
+      const pair_filter::Centre ctr = pair_filter::centre(s.box, s.x[i], s.y[i], s.z[i], rc2);
+      const std::size_t k = pair_filter::append_sparse(s.x.data(), s.y.data(), s.z.data(), i + 1,
+                                                       std::uint32_t(n), ctr, sc.out(), off) - off;
       std::fill_n(sc.pi.data() + off, k, i);
       sc.counts.push_back(std::uint32_t(k));
       off += k;
