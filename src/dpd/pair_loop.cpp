@@ -505,13 +505,19 @@ class PairLoop final : public PairForces {
       for (std::uint32_t a = cells_.begin(c); a < cells_.end(c); ++a) {
         const std::size_t k = in_range(box, c, a, off, sc);
         std::fill_n(sc.own.data() + off, k, a);
-        if constexpr (!Zero)
-          for (std::size_t t = off; t < off + k; ++t) sc.ids[t] = ids[sc.j[t]], sc.pi[t] = ids[a];
+        if constexpr (!Zero) bead_ids(ids, ids[a], sc.j.data() + off, k, sc.pi.data() + off, sc.ids.data() + off);
         sc.counts.push_back(std::uint32_t(k));
         off += k;
       }
     }
     return off;
+  }
+
+  // The bead ids of k pairs of own bead `own` and sorted partners j, through the sort's order; restrict lets the
+  // loop vectorise.
+  static void bead_ids(const std::uint32_t* __restrict order, std::uint32_t own, const std::uint32_t* __restrict j,
+                       std::size_t k, std::uint32_t* __restrict pi, std::uint32_t* __restrict ids) {
+    for (std::size_t t = 0; t < k; ++t) ids[t] = order[j[t]], pi[t] = own;
   }
 
   // ζ of the k pairs collected for the cells [c0, c1), in one batch; their words to each cell's tap.
