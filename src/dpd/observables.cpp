@@ -142,6 +142,81 @@ double slope(const std::vector<double>& x, const std::vector<double>& y, std::si
 }
 }  // namespace
 
+namespace msd_sums {
+
+// Sums over the coordinates of the squared displacements between origin frames and the frames a lag after them:
+// for each origin and lag, their total over all coordinates and their total over each group of beads, each
+// added coordinate after coordinate in order (the group's inside the total's). The frames are transposed a
+// chunk of coordinates at a time (coordinate-major), so that one coordinate's values at all the lags of an
+// origin are contiguous and the loop over the lags vectorises; every lag's sums still see the coordinates one
+// after another, so they hold the bits of a loop over one lag at a time.
+class LagSums {
+ public:
+  LagSums(const std::vector<std::vector<double>>& frames, std::size_t stride, std::size_t lmax,
+          const std::vector<std::size_t>& first)
+      : frames_(frames), nf_(frames.size()), stride_(stride), lmax_(lmax), first_(first) {}
+
+  // Origins per pass: the pass holds two sums per origin and lag.
+  std::size_t origin_block() const { return std::max<std::size_t>(1, (std::size_t{1} << 19) / (lmax_ + 1)); }
+
+  // Origins [o0, o1): each origin's totals per lag into sum (divided by n), raw and cnt, its groups' into gsum,
+  // origin after origin.
+  void add(std::size_t o0, std::size_t o1, std::size_t n, std::vector<double>& sum, std::vector<double>& raw,
+           std::vector<std::vector<double>>& gsum, std::vector<std::size_t>& cnt) const {
+    const std::size_t w = lmax_ + 1, origins = o1 - o0;
+    std::vector<double> d2(origins * w, 0.0), dg(origins * w, 0.0);
+    const std::size_t chunk = std::max<std::size_t>(1, (std::size_t{1} << 15) / nf_);
+    std::vector<double> t(chunk * nf_);
+    for (std::size_t g = 0; g + 1 < first_.size(); ++g) {
+      for (std::size_t k0 = 3 * first_[g], end = 3 * first_[g + 1]; k0 < end; k0 += chunk) {
+        const std::size_t k1 = std::min(end, k0 + chunk);
+        transpose(k0, k1, t.data());
+        for (std::size_t o = o0; o < o1; ++o)
+          for (std::size_t k = k0; k < k1; ++k)
+            accumulate(t.data() + (k - k0) * nf_ + o * stride_, lags(o), d2.data() + (o - o0) * w,
+                       dg.data() + (o - o0) * w);
+      }
+      for (std::size_t o = o0; o < o1; ++o)
+        for (std::size_t l = 1; l <= lags(o); ++l) gsum[g][l] += dg[(o - o0) * w + l], dg[(o - o0) * w + l] = 0;
+    }
+    for (std::size_t o = o0; o < o1; ++o)
+      for (std::size_t l = 1; l <= lags(o); ++l) {
+        double x = d2[(o - o0) * w + l];
+        raw[l] += x;
+        x /= double(n);
+        sum[l] += x, ++cnt[l];
+      }
+  }
+
+ private:
+  // The lags of origin o: up to lmax, and within the frames.
+  std::size_t lags(std::size_t o) const { return std::min(lmax_, nf_ - 1 - o * stride_); }
+
+  // Coordinates [k0, k1) of every frame into t, coordinate-major.
+  void transpose(std::size_t k0, std::size_t k1, double* t) const {
+    for (std::size_t f = 0; f < nf_; ++f) {
+      const double* frame = frames_[f].data();
+      for (std::size_t k = k0; k < k1; ++k) t[(k - k0) * nf_ + f] = frame[k];
+    }
+  }
+
+  // One coordinate: at[0] at the origin, at[l] a lag l later.
+  static void accumulate(const double* __restrict at, std::size_t lags, double* __restrict d2,
+                         double* __restrict dg) {
+    const double a = at[0];
+    for (std::size_t l = 1; l <= lags; ++l) {
+      const double x = (at[l] - a) * (at[l] - a);
+      d2[l] += x, dg[l] += x;
+    }
+  }
+
+  const std::vector<std::vector<double>>& frames_;
+  std::size_t nf_, stride_, lmax_;
+  const std::vector<std::size_t>& first_;
+};
+
+}  // namespace msd_sums
+
 Msd MsdRecorder::finish() const {
   Msd out;
   const std::size_t nf = frames_.size();
@@ -161,25 +236,9 @@ Msd MsdRecorder::finish() const {
   std::vector<std::vector<double>> gsum(groups, std::vector<double>(lmax + 1, 0));
   std::vector<std::size_t> cnt(lmax + 1, 0);
   const std::size_t norigins = (nf - 1) / stride + 1;
-  for (std::size_t o = 0; o < norigins; ++o) {
-    const std::size_t t0 = o * stride;
-    const auto& a = frames_[t0];
-    for (std::size_t l = 1; l <= lmax && t0 + l < nf; ++l) {
-      const auto& b = frames_[t0 + l];
-      double d2 = 0;
-      for (std::size_t g = 0; g < groups; ++g) {
-        double dg = 0;
-        for (std::size_t k = 3 * first[g]; k < 3 * first[g + 1]; ++k) {
-          const double x = (b[k] - a[k]) * (b[k] - a[k]);
-          d2 += x, dg += x;
-        }
-        gsum[g][l] += dg;
-      }
-      raw[l] += d2;
-      d2 /= double(n_);
-      sum[l] += d2, ++cnt[l];
-    }
-  }
+  const msd_sums::LagSums lags{frames_, stride, lmax, first};
+  for (std::size_t o0 = 0; o0 < norigins; o0 += lags.origin_block())
+    lags.add(o0, std::min(norigins, o0 + lags.origin_block()), n_, sum, raw, gsum, cnt);
   out.tau.push_back(0), out.msd.push_back(0);
   for (std::size_t l = 1; l <= lmax; ++l) {
     out.tau.push_back(l * interval_);
@@ -207,66 +266,123 @@ Msd MsdRecorder::finish() const {
   return out;
 }
 
-namespace {
-// Squared minimum-image separations of bead i to its partners j > i (all of them, or those in the 27 cells
-// around i), into r2. Without a grid the partners are contiguous and the pass has no control flow, so it
-// vectorises.
-void partner_r2(const System& s, const CellGrid& grid, std::size_t i, std::vector<double>& r2) {
-  const double Lx = s.box.L[0], Ly = s.box.L[1], Lz = s.box.L[2];
+namespace rdf_pairs {
+
+// Minimum-image r² of (x, y, z)[t] − (xi, yi, zi) for t in [0, m), into r2; no control flow, so it vectorises.
+// The separation of a pair is the negation of its reverse's, bit for bit (min_image is odd), so either bead
+// may be the centre.
+void r2_from(const Box& box, double xi, double yi, double zi, const double* __restrict x, const double* __restrict y,
+             const double* __restrict z, std::size_t m, double* __restrict r2) {
+  const double Lx = box.L[0], Ly = box.L[1], Lz = box.L[2];
   const double hx = Lx / 2, hy = Ly / 2, hz = Lz / 2;
-  const double xi = s.x[i], yi = s.y[i], zi = s.z[i];
-  auto sep2 = [&](double x, double y, double z) {
-    const double dx = min_image(x - xi, Lx, hx), dy = min_image(y - yi, Ly, hy), dz = min_image(z - zi, Lz, hz);
-    return dx * dx + dy * dy + dz * dz;
-  };
-  r2.clear();
-  if (!grid.usable()) {
-    const std::size_t m = s.size() - i - 1;
-    r2.resize(m);
-    const double *x = s.x.data() + i + 1, *y = s.y.data() + i + 1, *z = s.z.data() + i + 1;
-    double* out = r2.data();
-    for (std::size_t t = 0; t < m; ++t) out[t] = sep2(x[t], y[t], z[t]);
-    return;
+  for (std::size_t t = 0; t < m; ++t) {
+    const double dx = min_image(x[t] - xi, Lx, hx), dy = min_image(y[t] - yi, Ly, hy), dz = min_image(z[t] - zi, Lz, hz);
+    r2[t] = dx * dx + dy * dy + dz * dz;
   }
-  int cells[27];
-  grid.stencil(grid.cell_of(xi, yi, zi), cells);
-  for (int c : cells)
-    for (std::uint32_t k = grid.start()[c]; k < grid.start()[c + 1]; ++k) {
-      const std::uint32_t j = grid.beads()[k];
-      if (j > i) r2.push_back(sep2(s.x[j], s.y[j], s.z[j]));
-    }
 }
-}  // namespace
+
+// Counts r² values into bins of r up to r_max. One spare bin collects the values beyond r_max: about half of
+// all pairs in a small box, at random, so a branch per pair would mispredict; the bins are found in a loop
+// without one, and it vectorises. Four histograms, summed at the end, take consecutive values in turn, so that
+// increments of one bin do not wait for each other.
+class Binner {
+ public:
+  Binner(int bins, double rmax)
+      : r2max_(rmax * rmax), inv_dr_(bins / rmax), last_(bins - 1), spare_(bins), counts_(4 * (std::size_t(bins) + 1), 0) {}
+  void add(const double* r2, std::size_t m) {
+    bin_.resize(m);
+    std::int32_t* out = bin_.data();
+    const double r2max = r2max_, inv_dr = inv_dr_;
+    const std::int32_t last = last_, spare = spare_;  // locals: the bin stores could alias the members
+    for (std::size_t t = 0; t < m; ++t) {
+      const bool inside = r2[t] < r2max;
+      const std::int32_t b = std::int32_t(std::sqrt(inside ? r2[t] : 0.0) * inv_dr);
+      out[t] = inside ? std::min(last, b) : spare;
+    }
+    const std::size_t w = std::size_t(spare_) + 1;
+    std::uint64_t* c = counts_.data();
+    std::size_t t = 0;
+    for (; t + 4 <= m; t += 4)
+      ++c[std::size_t(out[t])], ++c[w + std::size_t(out[t + 1])], ++c[2 * w + std::size_t(out[t + 2])],
+          ++c[3 * w + std::size_t(out[t + 3])];
+    for (; t < m; ++t) ++c[std::size_t(out[t])];
+  }
+  // Adds the counts inside r_max to total.
+  void add_to(std::vector<std::uint64_t>& total) const {
+    const std::size_t w = std::size_t(spare_) + 1;
+    for (std::size_t b = 0; b < total.size(); ++b)
+      total[b] += counts_[b] + counts_[w + b] + counts_[2 * w + b] + counts_[3 * w + b];
+  }
+
+ private:
+  double r2max_, inv_dr_;
+  std::int32_t last_, spare_;
+  std::vector<std::uint64_t> counts_;
+  std::vector<std::int32_t> bin_;
+};
+
+// Beads sorted by the grid's cells, as contiguous copies of their positions.
+struct SortedPositions {
+  std::vector<double> x, y, z;
+  SortedPositions() = default;
+  SortedPositions(const System& s, const CellGrid& grid) {
+    const std::vector<std::uint32_t>& beads = grid.beads();
+    x.resize(beads.size()), y.resize(beads.size()), z.resize(beads.size());
+    for (std::size_t k = 0; k < beads.size(); ++k) x[k] = s.x[beads[k]], y[k] = s.y[beads[k]], z[k] = s.z[beads[k]];
+  }
+};
+
+// Every pair once: bead i against the beads after it.
+void all_pairs(const System& s, std::int64_t q, std::vector<double>& r2, Binner& bins) {
+  const std::size_t i = static_cast<std::size_t>(q), m = s.size() - i - 1;
+  r2.resize(m);
+  r2_from(s.box, s.x[i], s.y[i], s.z[i], s.x.data() + i + 1, s.y.data() + i + 1, s.z.data() + i + 1, m, r2.data());
+  bins.add(r2.data(), m);
+}
+
+// Every pair of neighbouring cells once: cell c's beads each against the beads after it in c, and all of them
+// against the 13 cells of the stencil's forward half (distinct from each other and from c's backward half, as
+// the grid has at least 3 cells along each axis).
+void cell_pairs(const System& s, const CellGrid& grid, const SortedPositions& p, int c, std::vector<double>& r2,
+                Binner& bins) {
+  constexpr int kOwn = 13;  // the stencil's centre; the forward half follows it
+  int cells[27];
+  grid.stencil(c, cells);
+  const std::uint32_t* start = grid.start().data();
+  for (std::uint32_t a = start[c]; a < start[c + 1]; ++a) {
+    r2.clear();
+    for (int k = kOwn; k < 27; ++k) {
+      const std::uint32_t lo = k == kOwn ? a + 1 : start[cells[k]], hi = start[cells[k] + 1];
+      const std::size_t done = r2.size();
+      r2.resize(done + (hi - lo));
+      r2_from(s.box, p.x[a], p.y[a], p.z[a], p.x.data() + lo, p.y.data() + lo, p.z.data() + lo, hi - lo,
+              r2.data() + done);
+    }
+    bins.add(r2.data(), r2.size());
+  }
+}
+
+}  // namespace rdf_pairs
 
 void RdfHistogram::sample(const System& s, int block) {
-  const double r2max = rmax_ * rmax_, inv_dr = bins_ / rmax_;
   CellGrid grid;
   if (s.size() > 2000) grid.build(s, rmax_);
-  const std::int64_t n = static_cast<std::int64_t>(s.size());
-#pragma omp parallel num_threads(threads_) if (grid.usable())
+  const bool cells = grid.usable();
+  const rdf_pairs::SortedPositions sorted = cells ? rdf_pairs::SortedPositions(s, grid) : rdf_pairs::SortedPositions{};
+  const std::int64_t n = cells ? std::int64_t(grid.start().size()) - 1 : static_cast<std::int64_t>(s.size());
+#pragma omp parallel num_threads(threads_) if (cells)
   {
-    // One spare bin collects the partners beyond r_max: about half of all pairs in a small box, at random, so
-    // a branch per pair would mispredict; the bins are found in a loop without one, and it vectorises.
-    std::vector<std::uint64_t> mine(std::size_t(bins_) + 1, 0);
+    rdf_pairs::Binner mine(bins_, rmax_);
     std::vector<double> r2;
-    std::vector<std::int32_t> bin;
-    const std::int32_t last = bins_ - 1, spare = bins_;  // locals: the bin stores could alias the member
-#pragma omp for schedule(dynamic, 256)
+#pragma omp for schedule(dynamic, 16)
     for (std::int64_t q = 0; q < n; ++q) {
-      partner_r2(s, grid, static_cast<std::size_t>(q), r2);
-      bin.resize(r2.size());
-      const double* v = r2.data();
-      std::int32_t* out = bin.data();
-      for (std::size_t t = 0, m = r2.size(); t < m; ++t) {
-        const bool inside = v[t] < r2max;
-        const std::int32_t b = std::int32_t(std::sqrt(inside ? v[t] : 0.0) * inv_dr);
-        out[t] = inside ? std::min(last, b) : spare;
-      }
-      for (const std::int32_t b : bin) ++mine[std::size_t(b)];
+      if (cells)
+        rdf_pairs::cell_pairs(s, grid, sorted, int(q), r2, mine);
+      else
+        rdf_pairs::all_pairs(s, q, r2, mine);
     }
-    mine.pop_back();
 #pragma omp critical(dpdrng_rdf)
-    for (std::size_t b = 0; b < mine.size(); ++b) counts_[std::size_t(block)][b] += mine[b];
+    mine.add_to(counts_[std::size_t(block)]);
   }
   ++block_samples_[std::size_t(block)];
 }

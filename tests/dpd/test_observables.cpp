@@ -28,6 +28,26 @@ std::vector<double> brute_counts(const System& s, int bins, double rmax) {
 }
 }  // namespace
 
+// 3 000 beads (the cell-list path: more than 2 000 beads) in a box of 7.6 (three cells along each axis, the
+// fewest the grid takes: the forward half of the stencil and the backward half are then as far apart as they get).
+TEST(Rdf, CellListCountsEqualBruteForceOnTheSmallestGrid) {
+  const int bins = 25;
+  const double rmax = 2.5, L = 7.6;
+  const System s = make_fluid(3000, Box{{L, L, L}}, 1.0, 12);
+  const auto brute = brute_counts(s, bins, rmax);
+  const double n = double(s.size()), pair_density = n * (n - 1) / 2 / (L * L * L), dr = rmax / bins;
+  for (int threads : {1, 2}) {
+    RdfHistogram h(bins, rmax, threads);
+    h.sample(s);
+    const Rdf g = h.finish(s);
+    for (int b = 0; b < bins; ++b) {
+      const double r0 = b * dr, r1 = r0 + dr;
+      const double shell = 4.0 / 3.0 * std::numbers::pi * (r1 * r1 * r1 - r0 * r0 * r0);
+      EXPECT_NEAR(g.g[b] * pair_density * shell, brute[b], 1e-9 * (1 + brute[b])) << "threads " << threads << " bin " << b;
+    }
+  }
+}
+
 // 3 000 beads in a box of 10 (the cell-list path: more than 2 000 beads), 25 bins to 2.5, one configuration.
 TEST(Rdf, CellListCountsEqualBruteForceForAnyTeamAndIdealGasIsFlat) {
   const int bins = 25;

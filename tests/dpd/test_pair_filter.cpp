@@ -1,4 +1,4 @@
-// The pair loop's SIMD candidate filter against the scalar loop it stands for (min_image, r², keep r² < r_c²
+// The pair loop's SIMD candidate filters (compress-store and mask-then-recompute) against the scalar loop it stands for (min_image, r², keep r² < r_c²
 // in order, NaN out): the same pairs, in the same order, with the same bits, for every range length around
 // the vector width, ranges that start anywhere, and appends after pairs already kept.
 #include <gtest/gtest.h>
@@ -64,17 +64,21 @@ TEST(PairFilter, MatchesTheScalarLoopForEveryRange) {
         const std::uint32_t hi = std::min<std::uint32_t>(lo + len, n);
         const pf::Centre c = pf::centre(box, x[centre], y[centre], z[centre], 1.44);
         const std::size_t before = 3;  // pairs already kept: appended after them
-        Pairs a(before + (hi - lo) + pf::kSlack), b(before + (hi - lo) + pf::kSlack);
-        const std::size_t ka = pf::append_in_range(x.data(), y.data(), z.data(), lo, hi, c, a.out(), before);
+        Pairs b(before + (hi - lo) + pf::kSlack);
         const std::size_t kb = plain(x, y, z, lo, hi, c, b, before);
-        ASSERT_EQ(ka, kb) << centre << " " << lo << " " << len;
-        for (std::size_t t = 0; t < before; ++t) EXPECT_EQ(a.r2[t], -7.0);  // untouched
-        for (std::size_t t = before; t < ka; ++t) {
-          EXPECT_EQ(a.j[t], b.j[t]);
-          EXPECT_EQ(bits(a.dx[t]), bits(b.dx[t]));
-          EXPECT_EQ(bits(a.dy[t]), bits(b.dy[t]));
-          EXPECT_EQ(bits(a.dz[t]), bits(b.dz[t]));
-          EXPECT_EQ(bits(a.r2[t]), bits(b.r2[t]));
+        for (const bool sparse : {false, true}) {
+          Pairs a(before + (hi - lo) + pf::kSlack);
+          const std::size_t ka = sparse ? pf::append_sparse(x.data(), y.data(), z.data(), lo, hi, c, a.out(), before)
+                                        : pf::append_in_range(x.data(), y.data(), z.data(), lo, hi, c, a.out(), before);
+          ASSERT_EQ(ka, kb) << centre << " " << lo << " " << len << " sparse " << sparse;
+          for (std::size_t t = 0; t < before; ++t) EXPECT_EQ(a.r2[t], -7.0);  // untouched
+          for (std::size_t t = before; t < ka; ++t) {
+            EXPECT_EQ(a.j[t], b.j[t]);
+            EXPECT_EQ(bits(a.dx[t]), bits(b.dx[t]));
+            EXPECT_EQ(bits(a.dy[t]), bits(b.dy[t]));
+            EXPECT_EQ(bits(a.dz[t]), bits(b.dz[t]));
+            EXPECT_EQ(bits(a.r2[t]), bits(b.r2[t]));
+          }
         }
       }
 }

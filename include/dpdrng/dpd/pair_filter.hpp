@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <algorithm>
 
 #if defined(__AVX512F__) && defined(__AVX512VL__) || defined(__AVX2__)
 #include <immintrin.h>
@@ -150,6 +151,60 @@ inline std::size_t append_in_range(const double* x, const double* y, const doubl
   }
   return kept;
 #endif
+}
+
+// The candidates k in [lo, hi) (at most 64) with r² < rc2 (NaN fails), as a bit mask (bit k − lo). Nothing is
+// stored per candidate: where few are kept (~1 in 20 along an all-pairs row), the caller recomputes the kept
+// ones' separations (kept_pair), which are the bits the vector lanes had.
+inline std::uint64_t inside_mask(const double* x, const double* y, const double* z, std::uint32_t lo,
+                                 std::uint32_t hi, const Centre& c) {
+#if defined(__AVX512F__) && defined(__AVX512VL__) || defined(__AVX2__)
+  using namespace isa;
+  const V xi = set1(c.x), yi = set1(c.y), zi = set1(c.z), rc2 = set1(c.rc2);
+  const V Lx = set1(c.Lx), Ly = set1(c.Ly), Lz = set1(c.Lz), hx = set1(c.hx), hy = set1(c.hy), hz = set1(c.hz);
+  const V nLx = set1(-c.Lx), nLy = set1(-c.Ly), nLz = set1(-c.Lz), nhx = set1(-c.hx), nhy = set1(-c.hy),
+          nhz = set1(-c.hz);
+  auto one = [&](V px, V py, V pz) {
+    const V a = min_image(px - xi, Lx, hx, nLx, nhx), b = min_image(py - yi, Ly, hy, nLy, nhy),
+            d = min_image(pz - zi, Lz, hz, nLz, nhz);
+    return std::uint64_t(inside(a * a + b * b + d * d, rc2));
+  };
+  std::uint64_t mask = 0;
+  std::uint32_t k = lo;
+  for (; k + kW <= hi; k += kW) mask |= one(load(x + k), load(y + k), load(z + k)) << (k - lo);
+  if (k < hi) {
+    const int n = int(hi - k);
+    mask |= (one(load_part(x + k, n), load_part(y + k, n), load_part(z + k, n)) & ((1u << n) - 1)) << (k - lo);
+  }
+  return mask;
+#else
+  std::uint64_t mask = 0;
+  for (std::uint32_t k = lo; k < hi; ++k) {
+    const double a = min_image(x[k] - c.x, c.Lx, c.hx), b = min_image(y[k] - c.y, c.Ly, c.hy),
+                 d = min_image(z[k] - c.z, c.Lz, c.hz);
+    mask |= std::uint64_t(a * a + b * b + d * d < c.rc2) << (k - lo);
+  }
+  return mask;
+#endif
+}
+
+// Candidate k's separation and r², as every path of the filter computes them, to out at index `at`.
+inline void kept_pair(const double* x, const double* y, const double* z, std::uint32_t k, const Centre& c,
+                      const Out& out, std::size_t at) {
+  const double a = min_image(x[k] - c.x, c.Lx, c.hx), b = min_image(y[k] - c.y, c.Ly, c.hy),
+               d = min_image(z[k] - c.z, c.Lz, c.hz);
+  out.dx[at] = a, out.dy[at] = b, out.dz[at] = d, out.r2[at] = a * a + b * b + d * d, out.j[at] = k;
+}
+
+// Appends the candidates k in [lo, hi) with r² < rc2, in order, to out from index `kept` on, 64 candidates
+// to a mask; returns the new count. Needs no slack.
+inline std::size_t append_sparse(const double* x, const double* y, const double* z, std::uint32_t lo,
+                                 std::uint32_t hi, const Centre& c, const Out& out, std::size_t kept) {
+  for (std::uint32_t base = lo; base < hi; base += 64) {
+    for (std::uint64_t m = inside_mask(x, y, z, base, std::min(hi, base + 64), c); m != 0; m &= m - 1)
+      kept_pair(x, y, z, base + std::uint32_t(std::countr_zero(m)), c, out, kept++);
+  }
+  return kept;
 }
 
 }  // namespace dpdrng::dpd::pair_filter

@@ -1,13 +1,14 @@
 #pragma once
 // The pair loop, compiled once (pair_loop.cpp), around a per-noise kernel (noise_kernel.hpp) that it calls once
 // per batch of pairs: a group of rows (all mode) or a layer of cells (cells mode), never per pair.
-//   all:   row i does its partners j > i: geometry (separation, r²) for all, then the pairs inside r_c kept
-//          (compact_in_range: ~1 candidate in 20 is kept, so a copy per kept pair beats the SIMD filter's
-//          stores per vector). Under a hash, sixteen rows collect their pairs so, draw the noise of all of
-//          them in one batch (a hash's block depends on the pair alone, so the pairs outside r_c need none),
-//          then do their forces row by row. A stream, which owns a number per pair slot, and a tapped step,
-//          which records every pair's words, draw every pair of a row (NoiseKernel::row). Reactions are added
-//          serially.
+//   all:   row i does its partners j > i. Under a hash, sixteen rows collect their pairs inside r_c
+//          (pair_filter::append_sparse: ~1 candidate in 20 is kept, so 64 candidates become a mask in SIMD
+//          registers and only the kept pairs' separations are written), draw the noise of all of them in one
+//          batch (a hash's block depends on the pair alone, so the pairs outside r_c need none), compute the
+//          group's pair terms in one vectorised pass, then sum each row's forces in pair order. A stream, which
+//          owns a number per pair slot, and a tapped step, which records every pair's words, draw every pair
+//          of a row (NoiseKernel::row): geometry for all, then the pairs inside r_c kept (compact_in_range).
+//          Reactions are added serially.
 //   cells: the beads are sorted by cell every step (neighbours.hpp) and copied into sorted arrays, both
 //          shared by the team (every sorted slot written once, so any team gives the same arrays); each cell
 //          does its own pairs and those with its 13 forward neighbours, writing both forces at once; the
