@@ -30,10 +30,12 @@ inline std::string scratch(const std::string& suffix) {
          std::to_string(getpid()) + suffix;
 }
 
-// Runs `dpdrng <args>`, stdout and stderr to files; code -1 if it did not exit normally (a crash).
-inline Result run(const std::string& args) {
+// Runs `<shell_prefix>dpdrng <args>` (the prefix may set a directory or environment), stdout and stderr to
+// files; code -1 if it did not exit normally (a crash).
+inline Result run_after(const std::string& shell_prefix, const std::string& args) {
   const std::string out = scratch(".out"), err = scratch(".err");
-  const std::string cmd = "\"" DPDRNG_CLI_PATH "\" " + args + " > \"" + out + "\" 2> \"" + err + "\"";
+  const std::string cmd =
+      shell_prefix + "\"" DPDRNG_CLI_PATH "\" " + args + " > \"" + out + "\" 2> \"" + err + "\"";
   const int status = std::system(cmd.c_str());
   Result r;
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -43,6 +45,9 @@ inline Result run(const std::string& args) {
   std::remove(err.c_str());
   return r;
 }
+
+// Runs `dpdrng <args>`, stdout and stderr to files; code -1 if it did not exit normally (a crash).
+inline Result run(const std::string& args) { return run_after("", args); }
 
 // Exit 2, nothing on standard output, one line on standard error that mentions `names`.
 inline void expect_bad(const std::string& args, const std::string& names) {

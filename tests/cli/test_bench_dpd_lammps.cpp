@@ -21,17 +21,7 @@ constexpr const char* kShort =
 
 // Runs `dpdrng ARGS` in `dir` with PATH = `dir` only, so that no lmp_dpdrng is found unless named.
 Result run_in(const std::filesystem::path& dir, const std::string& args) {
-  const std::string out = scratch(".out"), err = scratch(".err");
-  const std::string cmd = "cd \"" + dir.string() + "\" && PATH=\"" + dir.string() + "\" \"" DPDRNG_CLI_PATH "\" " +
-                          args + " > \"" + out + "\" 2> \"" + err + "\"";
-  const int status = std::system(cmd.c_str());
-  Result r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
-  std::remove(out.c_str());
-  std::remove(err.c_str());
-  return r;
+  return run_after("cd \"" + dir.string() + "\" && PATH=\"" + dir.string() + "\" ", args);
 }
 
 void expect_not_applicable(const nlohmann::json& j, const std::string& why) {

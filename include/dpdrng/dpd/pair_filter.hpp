@@ -113,6 +113,26 @@ inline constexpr std::size_t kSlack = 0;
 
 #endif
 
+#if defined(__AVX512F__) && defined(__AVX512VL__) || defined(__AVX2__)
+// The centre and the box in every lane, and the minimum-image separations of a vector of candidates from it.
+struct Lanes {
+  isa::V xi, yi, zi, rc2, Lx, Ly, Lz, hx, hy, hz, nLx, nLy, nLz, nhx, nhy, nhz;
+  explicit Lanes(const Centre& c)
+      : xi(isa::set1(c.x)), yi(isa::set1(c.y)), zi(isa::set1(c.z)), rc2(isa::set1(c.rc2)), Lx(isa::set1(c.Lx)),
+        Ly(isa::set1(c.Ly)), Lz(isa::set1(c.Lz)), hx(isa::set1(c.hx)), hy(isa::set1(c.hy)), hz(isa::set1(c.hz)),
+        nLx(isa::set1(-c.Lx)), nLy(isa::set1(-c.Ly)), nLz(isa::set1(-c.Lz)), nhx(isa::set1(-c.hx)),
+        nhy(isa::set1(-c.hy)), nhz(isa::set1(-c.hz)) {}
+  struct Separation {
+    isa::V a, b, d, r2;
+  };
+  Separation separation(isa::V px, isa::V py, isa::V pz) const {
+    const isa::V a = isa::min_image(px - xi, Lx, hx, nLx, nhx), b = isa::min_image(py - yi, Ly, hy, nLy, nhy),
+                 d = isa::min_image(pz - zi, Lz, hz, nLz, nhz);
+    return {a, b, d, a * a + b * b + d * d};
+  }
+};
+#endif
+
 // Appends the candidates k in [lo, hi) of (x, y, z) with r² < rc2 (NaN fails), in order, as pairs with
 // partner k to out from index `kept` on; returns the new count. The stores are unconditional: among a cell's
 // candidates ~1 in 6 is kept, and a branch past a vector without any would mispredict.
@@ -120,16 +140,11 @@ inline std::size_t append_in_range(const double* x, const double* y, const doubl
                                    std::uint32_t hi, const Centre& c, const Out& out, std::size_t kept) {
 #if defined(__AVX512F__) && defined(__AVX512VL__) || defined(__AVX2__)
   using namespace isa;
-  const V xi = set1(c.x), yi = set1(c.y), zi = set1(c.z), rc2 = set1(c.rc2);
-  const V Lx = set1(c.Lx), Ly = set1(c.Ly), Lz = set1(c.Lz), hx = set1(c.hx), hy = set1(c.hy), hz = set1(c.hz);
-  const V nLx = set1(-c.Lx), nLy = set1(-c.Ly), nLz = set1(-c.Lz), nhx = set1(-c.hx), nhy = set1(-c.hy),
-          nhz = set1(-c.hz);
+  const Lanes at(c);
   auto one = [&](V px, V py, V pz, std::uint32_t k, unsigned lanes) {
-    const V a = min_image(px - xi, Lx, hx, nLx, nhx), b = min_image(py - yi, Ly, hy, nLy, nhy),
-            d = min_image(pz - zi, Lz, hz, nLz, nhz);
-    const V r2 = a * a + b * b + d * d;
-    const unsigned m = inside(r2, rc2) & lanes;
-    put(out.dx + kept, a, m), put(out.dy + kept, b, m), put(out.dz + kept, d, m), put(out.r2 + kept, r2, m);
+    const Lanes::Separation s = at.separation(px, py, pz);
+    const unsigned m = inside(s.r2, at.rc2) & lanes;
+    put(out.dx + kept, s.a, m), put(out.dy + kept, s.b, m), put(out.dz + kept, s.d, m), put(out.r2 + kept, s.r2, m);
     put_j(out.j + kept, k, m);
     kept += std::size_t(std::popcount(m));
   };
@@ -160,15 +175,8 @@ inline std::uint64_t inside_mask(const double* x, const double* y, const double*
                                  std::uint32_t hi, const Centre& c) {
 #if defined(__AVX512F__) && defined(__AVX512VL__) || defined(__AVX2__)
   using namespace isa;
-  const V xi = set1(c.x), yi = set1(c.y), zi = set1(c.z), rc2 = set1(c.rc2);
-  const V Lx = set1(c.Lx), Ly = set1(c.Ly), Lz = set1(c.Lz), hx = set1(c.hx), hy = set1(c.hy), hz = set1(c.hz);
-  const V nLx = set1(-c.Lx), nLy = set1(-c.Ly), nLz = set1(-c.Lz), nhx = set1(-c.hx), nhy = set1(-c.hy),
-          nhz = set1(-c.hz);
-  auto one = [&](V px, V py, V pz) {
-    const V a = min_image(px - xi, Lx, hx, nLx, nhx), b = min_image(py - yi, Ly, hy, nLy, nhy),
-            d = min_image(pz - zi, Lz, hz, nLz, nhz);
-    return std::uint64_t(inside(a * a + b * b + d * d, rc2));
-  };
+  const Lanes at(c);
+  auto one = [&](V px, V py, V pz) { return std::uint64_t(inside(at.separation(px, py, pz).r2, at.rc2)); };
   std::uint64_t mask = 0;
   std::uint32_t k = lo;
   for (; k + kW <= hi; k += kW) mask |= one(load(x + k), load(y + k), load(z + k)) << (k - lo);
