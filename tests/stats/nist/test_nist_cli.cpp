@@ -1,6 +1,7 @@
 // `dpdrng nist`, its per-test subcommands and `dpdrng bench nist`, run as a user would: exit codes, TSV shape.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -31,10 +32,12 @@ CliRun run_cli(const std::string& args) {
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
 }
 
-// The first 10^5 bits of e as the reference's ASCII data files hold them (wrapped lines, as data.e is).
+// The first 10^5 bits of e as the reference's ASCII data files hold them (wrapped lines, as data.e is), in a
+// file of this process's own: ctest runs the tests of this file as parallel processes, and one writing a shared
+// file while another reads it would hand the reader a truncated input.
 const std::string& e_file() {
   static const std::string path = [] {
-    const std::string p = ::testing::TempDir() + "dpdrng_nist_e.txt";
+    const std::string p = ::testing::TempDir() + "dpdrng_nist_e_" + std::to_string(getpid()) + ".txt";
     const BitSequence s = testing_::cached_expansion(testing_::Constant::e);
     std::ofstream f(p);
     for (std::size_t i = 0; i < 100000; ++i) f << (s[i] ? '1' : '0') << (i % 64 == 63 ? "\n" : "");
