@@ -215,7 +215,8 @@ const bool registered = register_command(60, [](CLI::App& root) {
   p->add_flag("--no-charts", *no_charts, "skip gnuplot");
   auto calibration = std::make_shared<std::string>();
   p->add_option("--calibration", *calibration,
-                "calibration.json (or a directory of them) for the detection limit; default DIR/../calibration")
+                "calibration.json (or a directory of them) for the detection limit; default DIR/../calibration and "
+                "DIR/../*/calibration.json")
       ->check(non_empty_path());
   add_allow_plugin(*p);
   p->callback([dir, no_charts, calibration] { report(*dir, !*no_charts, *calibration); });

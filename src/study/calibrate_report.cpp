@@ -511,23 +511,51 @@ std::string where(const fs::path& file) {
 
 }  // namespace
 
-std::string detection_limit_sentence(const StudyConfig& config, const fs::path& dir) {
+namespace {
+
+// "False alarms at this study's own size (…): …" from a calibration that ran null studies of this very config
+// (`study calibrate --at-size`), or "" when `j` is not one with a null row for `replicas`. Such a calibration
+// injects no defects, so it bounds false alarms, not the detection limit.
+std::string at_size_clause(const nlohmann::json& j, int replicas, const fs::path& file) {
+  if (!j.value("at_size", false)) return "";
+  for (const auto& n : j.at("false_alarms")) {
+    if (n.at("replicas").get<int>() != replicas) continue;
+    const Rate studies = rate_from(n.at("studies")), verdicts = rate_from(n.at("verdicts"));
+    std::ostringstream s;
+    s << "False alarms at this study's own size (from " << where(file) << "): ≤ " << pct(studies.high, "%.2g")
+      << " per study (95 % upper bound; " << studies.events << " of " << studies.trials
+      << " null studies of these variants, tests and error control, with keyed Philox in place of the tested "
+         "generators, had one); "
+      << verdicts.events << " of " << verdicts.trials << " null variant verdicts were `differs` (≤ "
+      << pct(verdicts.high, "%.2g") << ").";
+    return s.str();
+  }
+  return "";
+}
+
+}  // namespace
+
+std::string detection_limit_sentence(const StudyConfig& config, const std::vector<fs::path>& places) {
+  std::vector<fs::path> files;
+  for (const auto& place : places)
+    for (auto& f : calibration_files(place)) files.push_back(std::move(f));
   const std::string none = "Detection limit: not calibrated for this config (no `dpdrng study calibrate` result "
                            "with its scene, run length, tests and replica count).";
   if (config.scene.is_bilayer())
     return "Detection limit: not calibrated (`dpdrng study calibrate` runs the water scene only; a membrane "
            "cell costs minutes, a calibration thousands of cells).";
   const nlohmann::json key = calibration_key(config);
-  std::string other_length;
-  for (const auto& file : calibration_files(dir)) {
+  std::string limit, other_length, at_size;
+  for (const auto& file : files) {
     try {
       std::ifstream in(file);
       const nlohmann::json j = nlohmann::json::parse(in);
+      if (at_size.empty() && j.at("key") == key) at_size = at_size_clause(j, config.replicas, file);
       const std::string clause = limit_clause(j, config.replicas);
       if (clause.empty()) continue;
-      if (j.at("key") == key)
-        return "Detection limit (from " + where(file) + "): with " + std::to_string(config.replicas) +
-               " replicas of " + std::to_string(config.scene.steps) + " steps, " + clause + ".";
+      if (limit.empty() && j.at("key") == key)
+        limit = "Detection limit (from " + where(file) + "): with " + std::to_string(config.replicas) +
+                " replicas of " + std::to_string(config.scene.steps) + " steps, " + clause + ".";
       if (other_length.empty() && without_length(j.at("key")) == without_length(key)) {
         const int steps = j.at("steps").get<int>();
         other_length = "Detection limit: not calibrated at this run length (" + std::to_string(config.scene.steps) +
@@ -541,7 +569,16 @@ std::string detection_limit_sentence(const StudyConfig& config, const fs::path& 
       continue;  // not a calibration file of this layout: another may match
     }
   }
-  return other_length.empty() ? none : other_length;
+  if (!limit.empty()) return at_size.empty() ? limit : at_size + " " + limit;
+  if (!other_length.empty()) return at_size.empty() ? other_length : at_size + " " + other_length;
+  if (!at_size.empty())
+    return at_size + " Detection limit: not calibrated at this size (defects are injected by `dpdrng study "
+                     "calibrate` without `--at-size`, at a smaller scene and its own replica count).";
+  return none;
+}
+
+std::string detection_limit_sentence(const StudyConfig& config, const fs::path& dir) {
+  return detection_limit_sentence(config, std::vector<fs::path>{dir});
 }
 
 }  // namespace dpdrng::study

@@ -152,7 +152,18 @@ std::string detection_limit(const StudyConfig& config, const fs::path& study_dir
   if (!options.calibration.empty()) return detection_limit_sentence(config, options.calibration);
   fs::path study = fs::absolute(study_dir).lexically_normal();
   if (!study.has_filename()) study = study.parent_path();  // "results/ci/" names the same directory
-  return detection_limit_sentence(config, study.parent_path() / "calibration");
+  // Calibrations live in calibration/ beside the study, or (null studies at a study's own size) in a directory of
+  // their own beside it.
+  const fs::path results = study.parent_path();
+  std::vector<fs::path> files;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(results, ec))
+    if (e.is_directory(ec) && e.path().filename() != "calibration" &&
+        fs::is_regular_file(e.path() / "calibration.json", ec))
+      files.push_back(e.path() / "calibration.json");
+  std::sort(files.begin(), files.end());
+  files.insert(files.begin(), results / "calibration");
+  return detection_limit_sentence(config, files);
 }
 
 std::string unreadable_cells_markdown(const std::vector<std::string>& files) {

@@ -313,6 +313,26 @@ TEST(Calibrate, AtSizeNullStudiesHaveTheStudysVariants) {
   EXPECT_TRUE(temperature);
   EXPECT_EQ(c.null_studies_planned, 6);
 
+  // The study's report, with this calibration in a directory beside it, quotes its false-alarm rate and says that
+  // the detection limit was not calibrated at this size.
+  write_calibration(c, tmp.path / "at-size", false, nullptr);
+  const std::string sentence = detection_limit_sentence(cfg, tmp.path / "at-size");
+  EXPECT_EQ(sentence.rfind("False alarms at this study's own size (from calibration.json in at-size): ≤ ", 0), 0u)
+      << sentence;
+  EXPECT_NE(sentence.find("6 of 6 null studies"), std::string::npos) << sentence;
+  EXPECT_NE(sentence.find("Detection limit: not calibrated at this size"), std::string::npos) << sentence;
+  StudyConfig more = cfg;
+  more.replicas = 4;  // no null row for this count
+  EXPECT_NE(detection_limit_sentence(more, tmp.path / "at-size").find("not calibrated for this config"),
+            std::string::npos);
+  {
+    ReportOptions o;
+    o.charts = false;
+    std::ifstream in(write_report(cfg, study_cells, tmp.path / "study", o));
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find(sentence), std::string::npos);
+  }
+
   // Each null study's outcome is kept on its own: with the cells gone, a rerun computes nothing and adds up the
   // same numbers; a study whose record is deleted has its cells (and only those) computed again.
   for (int s = 0; s < 6; ++s) {

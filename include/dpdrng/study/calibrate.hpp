@@ -144,9 +144,11 @@ Calibration read_calibration_tables(const std::filesystem::path& dir);
 // Writes the chart CSVs and scripts of the calibration in dir (its charts/), drawn from its tables.
 void write_calibration_charts(const Calibration& c, const std::filesystem::path& dir, bool run, std::ostream* log);
 
-// The report's detection-limit sentence for `config`, from the calibration.json files under `dir` (each a
-// calibration.json, or a directory of them): the one whose key matches the config and that has a row for its
-// replica count; "not calibrated for this config" otherwise.
-std::string detection_limit_sentence(const StudyConfig& config, const std::filesystem::path& dir);
+// The report's detection-limit sentence for `config`, from the calibration.json files in `places` (each a
+// calibration.json, or a directory searched for them): the one whose key matches the config and that has a row
+// for its replica count; "not calibrated for this config" otherwise. A calibration of null studies at the
+// config's own size (`--at-size`) puts its false-alarm rate in front.
+std::string detection_limit_sentence(const StudyConfig& config, const std::vector<std::filesystem::path>& places);
+std::string detection_limit_sentence(const StudyConfig& config, const std::filesystem::path& place);
 
 }  // namespace dpdrng::study
