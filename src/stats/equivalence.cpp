@@ -21,6 +21,27 @@ double equivalence_p(double diff, double se, double dof, double margin) {
   return std::max(above, below);
 }
 
+double equivalence_power(double se, double dof, double alpha, double margin) {
+  if (!(dof > 0) || !(se > 0) || !std::isfinite(se) || !(margin > 0) || !(alpha > 0 && alpha < 1)) return NAN;
+  const double t = dof > kNormalDof ? gsl_cdf_ugaussian_Qinv(alpha) : gsl_cdf_tdist_Qinv(alpha, dof);
+  const double room = margin / se - t;
+  return room > 0 ? 2 * t_lower(room, dof) - 1 : 0.0;
+}
+
+int replicas_for_equivalence(double sd, double ratio, double dof, double alpha, double margin, double power,
+                             int max_replicas) {
+  const auto at = [&](int r) { return equivalence_power(sd * std::sqrt((1 + 1 / ratio) / r), dof, alpha, margin); };
+  if (!(sd > 0) || !(ratio > 0) || !(power > 0 && power < 1) || std::isnan(at(2))) return -1;
+  if (at(max_replicas) < power) return 0;
+  if (at(2) >= power) return 2;
+  int low = 2, high = max_replicas;  // at(low) < power ≤ at(high): the power grows with R
+  while (high - low > 1) {
+    const int mid = low + (high - low) / 2;
+    (at(mid) >= power ? high : low) = mid;
+  }
+  return high;
+}
+
 double normal_score(double t, double dof) {
   if (std::isnan(t) || std::isnan(dof) || !(dof > 0)) return NAN;
   if (std::isinf(t)) return t;

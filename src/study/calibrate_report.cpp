@@ -509,10 +509,6 @@ std::string where(const fs::path& file) {
   return file.filename().string() + " in " + file.parent_path().filename().string();
 }
 
-}  // namespace
-
-namespace {
-
 // "False alarms at this study's own size (…): …" from a calibration that ran null studies of this very config
 // (`study calibrate --at-size`), or "" when `j` is not one with a null row for `replicas`. Such a calibration
 // injects no defects, so it bounds false alarms, not the detection limit.
@@ -533,12 +529,17 @@ std::string at_size_clause(const nlohmann::json& j, int replicas, const fs::path
   return "";
 }
 
-}  // namespace
-
-std::string detection_limit_sentence(const StudyConfig& config, const std::vector<fs::path>& places) {
+std::vector<fs::path> calibration_files(const std::vector<fs::path>& places) {
   std::vector<fs::path> files;
   for (const auto& place : places)
     for (auto& f : calibration_files(place)) files.push_back(std::move(f));
+  return files;
+}
+
+}  // namespace
+
+std::string detection_limit_sentence(const StudyConfig& config, const std::vector<fs::path>& places) {
+  const std::vector<fs::path> files = calibration_files(places);
   const std::string none = "Detection limit: not calibrated for this config (no `dpdrng study calibrate` result "
                            "with its scene, run length, tests and replica count).";
   if (config.scene.is_bilayer())
@@ -579,6 +580,25 @@ std::string detection_limit_sentence(const StudyConfig& config, const std::vecto
 
 std::string detection_limit_sentence(const StudyConfig& config, const fs::path& dir) {
   return detection_limit_sentence(config, std::vector<fs::path>{dir});
+}
+
+std::map<std::string, Rate> calibrated_equivalence(const StudyConfig& config, const std::vector<fs::path>& places) {
+  const nlohmann::json key = calibration_key(config);
+  for (const auto& file : calibration_files(places)) {
+    try {
+      std::ifstream in(file);
+      const nlohmann::json j = nlohmann::json::parse(in);
+      if (!j.value("at_size", false) || j.at("key") != key) continue;
+      std::map<std::string, Rate> out;
+      for (const auto& e : j.at("equivalence"))
+        if (e.at("replicas").get<int>() == config.replicas)
+          out[e.at("observable").get<std::string>()] = rate_from(e.at("equivalent"));
+      if (!out.empty()) return out;
+    } catch (const std::exception&) {
+      continue;  // not a calibration file of this layout: another may match
+    }
+  }
+  return {};
 }
 
 }  // namespace dpdrng::study

@@ -148,22 +148,24 @@ std::string report_header(const StudyConfig& config, const Analysis& a, const st
   return md.str();
 }
 
-std::string detection_limit(const StudyConfig& config, const fs::path& study_dir, const ReportOptions& options) {
-  if (!options.calibration.empty()) return detection_limit_sentence(config, options.calibration);
+std::vector<fs::path> calibration_places(const fs::path& study_dir, const ReportOptions& options) {
+  if (!options.calibration.empty()) return {options.calibration};
   fs::path study = fs::absolute(study_dir).lexically_normal();
   if (!study.has_filename()) study = study.parent_path();  // "results/ci/" names the same directory
-  // Calibrations live in calibration/ beside the study, or (null studies at a study's own size) in a directory of
-  // their own beside it.
   const fs::path results = study.parent_path();
-  std::vector<fs::path> files;
+  std::vector<fs::path> places;
   std::error_code ec;
   for (const auto& e : fs::directory_iterator(results, ec))
     if (e.is_directory(ec) && e.path().filename() != "calibration" &&
         fs::is_regular_file(e.path() / "calibration.json", ec))
-      files.push_back(e.path() / "calibration.json");
-  std::sort(files.begin(), files.end());
-  files.insert(files.begin(), results / "calibration");
-  return detection_limit_sentence(config, files);
+      places.push_back(e.path() / "calibration.json");
+  std::sort(places.begin(), places.end());
+  places.insert(places.begin(), results / "calibration");
+  return places;
+}
+
+std::string detection_limit(const StudyConfig& config, const fs::path& study_dir, const ReportOptions& options) {
+  return detection_limit_sentence(config, calibration_places(study_dir, options));
 }
 
 std::string unreadable_cells_markdown(const std::vector<std::string>& files) {
@@ -250,6 +252,10 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
     }
   const std::vector<RoundsRow> rounds = rounds_figures(a);
   write(dir / "rounds_figures.csv", rounds_figures_csv(rounds));
+  const std::vector<EquivalenceReplicas> replicas_for = equivalence_replicas(a);
+  const std::map<std::string, Rate> calibrated =
+      calibrated_equivalence(config, detail::calibration_places(study_dir, options));
+  write(dir / "equivalence_replicas.csv", equivalence_replicas_csv(replicas_for, calibrated));
   std::vector<std::string> made;
   if (options.charts) {
     detail::fresh_chart_directory(dir / "charts");
@@ -269,6 +275,7 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
         "shift, 95 % CI, margin, corrected P-values and outcome). **Bold**: differs.\n\n"
      << verdict_table_markdown(a) << "\n"
      << "### Error model check\n\n" << score_check_markdown(a) << "\n"
+     << "### Replicas for equivalence\n\n" << equivalence_replicas_markdown(replicas_for, calibrated) << "\n"
      << "### Variants, cost and NIST\n\n"
      << "*Smallest corrected p*: the smallest two-sided P-value of the variant after the error control (below α "
         "exactly when the verdict says *differs*). A variant whose MT19937 replicas are missing or unreadable gets "

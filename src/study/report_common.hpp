@@ -29,7 +29,11 @@ std::string chart_link(const std::string& name, const std::string& alt);    // P
 // Title, description, cells stored and broken, scene, replicas, error control, detection limit and config hash.
 std::string report_header(const StudyConfig& config, const Analysis& a, const std::vector<CellResult>& cells,
                           const std::string& detection_limit);
-// The detection-limit sentence from options.calibration, or from <study dir>/../calibration when not given.
+// Where a study's calibrations are read from: options.calibration when given; else <study dir>/../calibration
+// and the calibration.json of every other sibling directory (a calibration at the study's own size).
+std::vector<std::filesystem::path> calibration_places(const std::filesystem::path& study_dir,
+                                                      const ReportOptions& options);
+// The detection-limit sentence from those places.
 std::string detection_limit(const StudyConfig& config, const std::filesystem::path& study_dir,
                             const ReportOptions& options);
 // The "Unstable and failed cells" section, with every cell's notes.

@@ -1,6 +1,7 @@
 // verdicts.csv and the report's verdict table: one row per variant × observable with its shift, 95 % CI,
 // margin and outcome, and one row per variant ("all") with the variant's verdict.
 #include <cmath>
+#include <map>
 #include <sstream>
 
 #include "dpdrng/stats/binomial.hpp"
@@ -155,6 +156,74 @@ std::string score_check_markdown(const Analysis& a) {
   for (const auto& c : checks)
     o << "| " << observable_label(c.observable) << " | " << c.chosen.k << " | " << ratio(c.chosen) << " | "
       << (c.runs.k ? ratio(c.runs) : "–") << " |\n";
+  return o.str();
+}
+
+namespace {
+
+std::string calibrated_text(const std::map<std::string, Rate>& calibrated, const std::string& observable) {
+  const auto it = calibrated.find(observable);
+  if (it == calibrated.end()) return "";
+  const Rate& r = it->second;
+  return std::to_string(r.events) + "/" + std::to_string(r.trials) + " = " + fmt("%.1f", 100 * r.rate) + " % [" +
+         fmt("%.1f", 100 * r.low) + ", " + fmt("%.1f", 100 * r.high) + "]";
+}
+
+std::string needed_text(const EquivalenceReplicas& r) {
+  if (r.needed > 0) return std::to_string(r.needed) + " (reference " +
+                           std::to_string(int(std::ceil(double(r.needed) * r.reference_replicas / r.replicas))) + ")";
+  return r.needed == 0 ? "more than 100 000" : "not applicable: " + r.note.substr(r.note.find(':') + 2);
+}
+
+}  // namespace
+
+std::string equivalence_replicas_csv(const std::vector<EquivalenceReplicas>& rows,
+                                     const std::map<std::string, Rate>& calibrated) {
+  std::ostringstream o;
+  o << "observable,margin,comparisons,replica_sd,dof,replicas,reference_replicas,threshold,predicted_equivalent,"
+       "replicas_for_90,calibrated_equivalent,calibrated_trials,calibrated_low,calibrated_high,note\n";
+  for (const auto& r : rows) {
+    const auto it = calibrated.find(r.observable);
+    const bool cal = it != calibrated.end();
+    o << r.observable << "," << num(r.margin) << "," << r.comparisons << "," << num(r.sd) << "," << num(r.dof)
+      << "," << (r.replicas ? std::to_string(r.replicas) : "") << ","
+      << (r.reference_replicas ? std::to_string(r.reference_replicas) : "") << "," << num(r.threshold) << ","
+      << num(r.power_now) << "," << (r.needed >= 0 ? std::to_string(r.needed) : "") << ","
+      << (cal ? num(it->second.rate) : "") << "," << (cal ? std::to_string(it->second.trials) : "") << ","
+      << (cal ? num(it->second.low) : "") << "," << (cal ? num(it->second.high) : "") << "," << r.note << "\n";
+  }
+  return o.str();
+}
+
+std::string equivalence_replicas_markdown(const std::vector<EquivalenceReplicas>& rows,
+                                          const std::map<std::string, Rate>& calibrated) {
+  if (rows.empty()) return "No observable of this study has an equivalence margin.\n";
+  int replicas = 0;
+  for (const auto& r : rows) replicas = replicas ? replicas : r.replicas;
+  std::ostringstream o;
+  o << "How many replicas a generator as good as the reference needs to come out *equivalent* 90 % of the time: "
+       "the two one-sided tests at Holm's strictest threshold α/m = "
+    << fmt("%.2g", rows.front().threshold)
+    << ", a shift's standard error s × √(1/R + 1/R_ref) with s one replica's spread under the error model (median "
+       "over the variants' comparisons) and R_ref/R kept at this study's ratio, Student t on the comparisons' "
+       "degrees of freedom. A model: it adds no degrees of freedom with R and ignores Holm's looser later "
+       "thresholds (both make it ask for more replicas than needed), and it leaves out the comparisons whose "
+       "replicas scatter more than the pool (5 % of good ones, judged on their own spread alone, which rarely "
+       "pass). Runs n times as long shrink s about √n-fold, so replicas × steps is what an observable needs. "
+    << (calibrated.empty() ? "No calibration at this study's own size was found to check the model against."
+                           : "*Calibrated*: the rate at which good generators came out equivalent in the null "
+                             "studies at this study's own size (95 % Clopper–Pearson), the model's check.")
+    << " The table is `equivalence_replicas.csv`.\n\n"
+    << "| observable | margin | s (per replica) | predicted at R = " << replicas
+    << (calibrated.empty() ? "" : " | calibrated at the same R") << " | replicas for 90 % |\n|---|---|---|---|"
+    << (calibrated.empty() ? "" : "---|") << "---|\n";
+  for (const auto& r : rows) {
+    o << "| " << observable_label(r.observable) << " | ±" << fmt("%.3g", 100 * r.margin) << " % | "
+      << (std::isfinite(r.sd) ? fmt("%.3g", 100 * r.sd) + " %" : "–") << " | "
+      << (std::isfinite(r.power_now) ? fmt("%.1f", 100 * r.power_now) + " %" : "–") << " | ";
+    if (!calibrated.empty()) o << calibrated_text(calibrated, r.observable) << " | ";
+    o << needed_text(r) << " |\n";
+  }
   return o.str();
 }
 

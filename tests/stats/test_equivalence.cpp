@@ -41,6 +41,32 @@ TEST(Equivalence, NotApplicableInputsGiveNan) {
   EXPECT_EQ(equivalence_p(1.1, 0, 10, 1), 1.0);
 }
 
+// The power of the two one-sided tests at Δ = 0 (Chow, Shao & Wang, Sample Size Calculations in Clinical Research,
+// 2nd ed., 2008, §3.2.3): a margin of t_{0.95,10} + t_{0.95,10} = 3.624 standard errors passes 2 × 0.95 − 1 = 90 %
+// of the time; on the normal law, z_{0.95} + z_{0.95} = 3.2897 likewise. A margin inside t_{0.95} se never passes.
+TEST(Equivalence, PowerAtZeroShiftAgainstTheTTable) {
+  EXPECT_NEAR(equivalence_power(1.0, 10, 0.05, 3.624), 0.90, 2e-3);
+  EXPECT_NEAR(equivalence_power(2.0, 10, 0.05, 2 * 3.624), 0.90, 2e-3);  // scale-free
+  EXPECT_NEAR(equivalence_power(1.0, 1e9, 0.05, 3.2897), 0.90, 1e-4);
+  EXPECT_EQ(equivalence_power(1.0, 10, 0.05, 1.8), 0.0);
+  EXPECT_LT(equivalence_power(1.0, 10, 0.01, 3.624), equivalence_power(1.0, 10, 0.05, 3.624));
+  EXPECT_TRUE(std::isnan(equivalence_power(0.0, 10, 0.05, 1)));
+  EXPECT_TRUE(std::isnan(equivalence_power(1.0, 0, 0.05, 1)));
+  EXPECT_TRUE(std::isnan(equivalence_power(1.0, 10, 1.5, 1)));
+}
+
+// Chow, Shao & Wang §3.2.3, two parallel groups of n with true difference 0: n = (z_{1−α} + z_{1−β/2})² 2σ²/δ².
+// σ = 1, δ = 0.5, α = 0.05, power 80 % (z_{0.9} = 1.2816): n = (1.6449 + 1.2816)² × 8 = 68.5, so 69; a reference
+// with 4 × R replicas of the same spread: (1 + 1/4) in place of 2, 42.8, so 43.
+TEST(Equivalence, ReplicasForEquivalenceAgainstTheSampleSizeFormula) {
+  EXPECT_EQ(replicas_for_equivalence(1.0, 1.0, 1e9, 0.05, 0.5, 0.8), 69);
+  EXPECT_EQ(replicas_for_equivalence(1.0, 4.0, 1e9, 0.05, 0.5, 0.8), 43);
+  EXPECT_EQ(replicas_for_equivalence(1.0, 1.0, 1e9, 0.05, 100.0, 0.8), 2);  // the fewest a spread needs
+  EXPECT_EQ(replicas_for_equivalence(1.0, 1.0, 1e9, 0.05, 0.5, 0.8, 50), 0);  // out of reach
+  EXPECT_EQ(replicas_for_equivalence(0.0, 1.0, 1e9, 0.05, 0.5, 0.8), -1);
+  EXPECT_EQ(replicas_for_equivalence(1.0, 1.0, 1e9, 0.05, 0.5, 1.0), -1);
+}
+
 // t_{0.975,10} = 2.228 maps to z_{0.975} = 1.95996; far-out t keeps its digits through the tail.
 TEST(Equivalence, NormalScoreOfATStatistic) {
   EXPECT_NEAR(normal_score(2.228, 10), 1.959964, 2e-4);

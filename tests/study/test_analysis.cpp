@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <regex>
 
+#include "dpdrng/stats/equivalence.hpp"
 #include "dpdrng/stats/mean_tests.hpp"
 #include "dpdrng/stats/multiple.hpp"
 #include "dpdrng/stats/summary.hpp"
@@ -472,6 +474,68 @@ TEST(StudyAnalysis, TemperatureLimitFromTheStudysOwnSpread) {
 
   const Analysis shifted = analyse(cfg, fake_cells(cfg, 3 * t.high));
   EXPECT_TRUE(comparison(find(shifted, "tea32", 1), "temperature_mean").decision.differs);
+}
+
+// The replicas a good generator needs for `equivalent`: one replica's spread from each comparison's standard error
+// (σ / √(1/n + 1/n_ref), median over the variants), the study's R_ref/R, Holm's strictest threshold over the
+// equivalence family; the stats functions behind it are checked against Chow, Shao & Wang (test_equivalence).
+TEST(StudyAnalysis, ReplicasForEquivalenceFromTheStudysOwnSpread) {
+  const StudyConfig cfg = parse_config(kConfig + kWideMargins, "c.toml");
+  const Analysis a = analyse(cfg, fake_cells(cfg, 0.0));
+  const auto rows = equivalence_replicas(a);
+  const auto row = [&](const std::string& name) {
+    for (const auto& r : rows)
+      if (r.observable == name) return r;
+    throw std::runtime_error("no row " + name);
+  };
+  std::vector<double> sd, dof;
+  for (const auto& v : a.variants) {
+    if (v.key.reference || v.tests == 0) continue;
+    const Comparison& c = comparison(v, "temperature_mean");
+    sd.push_back(c.sigma / std::sqrt(1.0 / double(c.n) + 1.0 / double(c.n_ref)));
+    dof.push_back(c.dof);
+  }
+  const EquivalenceReplicas t = row("temperature_mean");
+  const double threshold = a.alpha / double(a.equivalence_tests);
+  EXPECT_EQ(t.comparisons, sd.size());
+  EXPECT_EQ(t.sd, dpdrng::stats::median(sd));
+  EXPECT_EQ(t.dof, dpdrng::stats::median(dof));
+  EXPECT_EQ(t.threshold, threshold);
+  EXPECT_EQ(t.replicas, 6);
+  EXPECT_EQ(t.reference_replicas, 6);
+  EXPECT_EQ(t.margin, 0.005);
+  EXPECT_EQ(t.needed, dpdrng::stats::replicas_for_equivalence(t.sd, 1.0, t.dof, threshold, 0.005, 0.9));
+  EXPECT_GE(t.needed, 2);
+  EXPECT_EQ(t.power_now,
+            dpdrng::stats::equivalence_power(t.sd * std::sqrt(2.0 / 6), t.dof, threshold, 0.005));
+  // A margin twice as wide needs about a quarter of the replicas (the fewest being 2).
+  const StudyConfig wider = parse_config(kConfig + kWideMargins + "temperature = 0.01\n", "c.toml");
+  const EquivalenceReplicas w = [&] {
+    for (const auto& r : equivalence_replicas(analyse(wider, fake_cells(wider, 0.0))))
+      if (r.observable == "temperature_mean") return r;
+    throw std::runtime_error("no row");
+  }();
+  EXPECT_LE(w.needed, std::max(2, (t.needed + 3) / 4 + 1));
+  // Curves are not modelled, and say so.
+  EXPECT_EQ(row("rdf_vs_mt").needed, -1);
+  EXPECT_NE(row("rdf_vs_mt").note.find("not modelled"), std::string::npos);
+
+  // The table and its CSV, with a calibrated rate beside the model where one is given.
+  std::map<std::string, Rate> calibrated{{"temperature_mean", make_rate(97, 100)}};
+  const std::string md = equivalence_replicas_markdown(rows, calibrated);
+  EXPECT_NE(md.find("calibrated at the same R"), std::string::npos) << md;
+  EXPECT_NE(md.find("97/100 = 97.0 %"), std::string::npos) << md;
+  EXPECT_NE(md.find("| " + std::to_string(t.needed) + " (reference " + std::to_string(t.needed) + ") |"),
+            std::string::npos)
+      << md;
+  EXPECT_EQ(equivalence_replicas_markdown(rows, {}).find("calibrated at the same R"), std::string::npos);
+  const std::string csv = equivalence_replicas_csv(rows, calibrated);
+  EXPECT_EQ(csv.rfind("observable,margin,comparisons,replica_sd,dof,replicas,reference_replicas,threshold,"
+                      "predicted_equivalent,replicas_for_90,calibrated_equivalent,",
+                      0),
+            0u);
+  EXPECT_NE(csv.find("\ntemperature_mean,0.005,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("," + std::to_string(t.needed) + ",0.97,100,"), std::string::npos) << csv;
 }
 
 }  // namespace dpdrng_test::study_test_analysis

@@ -13,6 +13,20 @@ namespace dpdrng::stats {
 // finite or margin ≤ 0; with se = 0, 0 inside the margin and 1 outside.
 double equivalence_p(double diff, double se, double dof, double margin);
 
+// The chance that those two tests at level `alpha` show equivalence when Δ = 0: the (1 − 2α) interval
+// diff ± t_{dof,1−α} se lies inside ±margin exactly when |diff| < margin − t se, and diff/se is taken as Student t
+// on dof: 2 F_dof(margin/se − t_{dof,1−α}) − 1, 0 when margin ≤ t se (Chow, Shao & Wang, Sample Size
+// Calculations in Clinical Research, 2008, §3.2.3, with the true difference 0). NaN for dof ≤ 0, se ≤ 0 or not
+// finite, margin ≤ 0, or α outside (0, 1).
+double equivalence_power(double se, double dof, double alpha, double margin);
+
+// The fewest replicas R (2 ≤ R ≤ max_replicas) for which equivalence_power reaches `power` when a replica's value
+// has standard deviation `sd` and the reference has `ratio` × R replicas of the same spread, so that
+// se = sd √((1 + 1/ratio) / R); `dof` stays as given (more replicas only add degrees of freedom, so R errs high).
+// 0 when even max_replicas fall short; −1 for arguments equivalence_power refuses, sd or ratio ≤ 0.
+int replicas_for_equivalence(double sd, double ratio, double dof, double alpha, double margin, double power,
+                             int max_replicas = 100000);
+
 // The standard-normal quantile of a t statistic's own distribution, Φ⁻¹(F_dof(t)): under the null it is
 // N(0, 1) whatever the degrees of freedom, so scores of tests on different dof can be pooled. dof = ∞ (or
 // larger than 1e7) is the normal itself. NaN for a t or dof that is not a number or dof ≤ 0.

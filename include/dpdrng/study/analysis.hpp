@@ -216,6 +216,28 @@ struct TemperatureLimit {
 TemperatureLimit temperature_limit(const Analysis& a, double power = 0.9);
 std::string temperature_limit_sentence(const Analysis& a);  // "" when no variant has a temperature test
 
+// How many replicas a generator as good as the reference needs to come out `equivalent` on each observable with
+// a margin, `power` of the time: the two one-sided tests (stats::equivalence_power) at Holm's strictest
+// threshold α/m over the study's m equivalence tests, a shift's standard error one replica's spread s (each
+// comparison's standard error over √(1/n + 1/n_ref), median over the comparisons) × √(1/R + 1/R_ref) with R_ref/R
+// kept at the study's ratio, Student t on the comparisons' degrees of freedom. A model: it adds no degrees of
+// freedom with R and ignores Holm's looser later thresholds (both make R high), and it ignores the comparisons
+// whose replicas' own spread replaces the pool (5 % of good ones, which rarely pass); a study calibrated at its own
+// size measures the rate at its R (study calibrate --at-size).
+struct EquivalenceReplicas {
+  std::string observable;
+  double margin = NAN;           // δ on the shift's scale
+  std::size_t comparisons = 0;   // the variants' comparisons behind the medians
+  double sd = NAN;               // one replica's spread relative to the reference's mean (median over comparisons)
+  double dof = NAN;              // median degrees of freedom of the comparisons
+  int replicas = 0, reference_replicas = 0;  // the study's (medians over the comparisons)
+  double threshold = NAN;        // α/m
+  double power_now = NAN;        // the predicted chance at the study's replicas
+  int needed = -1;               // replicas for `power`; 0: more than 100 000; −1: not modelled (see note)
+  std::string note;              // why the row is not modelled, "" when it is
+};
+std::vector<EquivalenceReplicas> equivalence_replicas(const Analysis& a, double power = 0.9);
+
 // Replica mean of a cell scalar with its 95 % confidence half-width: Student t over the replicas when there are
 // at least two; with one replica, 1.96 × the run's own block standard error (`sem_name`), flagged.
 struct ReplicaMean {

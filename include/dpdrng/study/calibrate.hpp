@@ -14,6 +14,7 @@
 // The reference and good-generator cells are shared by the null and power studies of a block.
 #include <filesystem>
 #include <iosfwd>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -150,5 +151,9 @@ void write_calibration_charts(const Calibration& c, const std::filesystem::path&
 // config's own size (`--at-size`) puts its false-alarm rate in front.
 std::string detection_limit_sentence(const StudyConfig& config, const std::vector<std::filesystem::path>& places);
 std::string detection_limit_sentence(const StudyConfig& config, const std::filesystem::path& place);
+// From the calibration at the config's own size among `places` (the first whose key matches): per observable,
+// how often a good generator's variant came out `equivalent` at the config's replica count. Empty when none.
+std::map<std::string, Rate> calibrated_equivalence(const StudyConfig& config,
+                                                   const std::vector<std::filesystem::path>& places);
 
 }  // namespace dpdrng::study

@@ -5,10 +5,12 @@
 #include <cmath>
 #include <filesystem>
 #include <iosfwd>
+#include <map>
 #include <string>
 #include <vector>
 
 #include "dpdrng/study/analysis.hpp"
+#include "dpdrng/study/calibrate.hpp"
 #include "dpdrng/study/cell_result.hpp"
 #include "dpdrng/study/config.hpp"
 
@@ -19,7 +21,8 @@ struct ReportOptions {
   std::ostream* log = nullptr;
   std::vector<std::string> unreadable;  // cell files that could not be read: listed by name in the report
   // Where the detection limit is read from (calibrate.hpp): a calibration.json or a directory holding them;
-  // empty = the study directory's sibling "calibration" (results/calibration beside results/<study>).
+  // empty = the study directory's sibling "calibration" (results/calibration beside results/<study>) and the
+  // calibration.json of any other sibling (results/<study>-at-size).
   std::filesystem::path calibration;
 };
 
@@ -43,6 +46,13 @@ std::string verdicts_csv(const Analysis& a);
 std::string verdict_table_markdown(const Analysis& a);
 // The error model's z-score check (score_dispersion) over the variants of known-good generators.
 std::string score_check_markdown(const Analysis& a);
+// report/equivalence_replicas.csv and its table: the replicas a generator as good as the reference needs to be
+// shown equivalent 90 % of the time (equivalence_replicas), beside the rate a calibration at the study's own size
+// measured at its replicas (`calibrated`, by observable; empty when there is none).
+std::string equivalence_replicas_csv(const std::vector<EquivalenceReplicas>& rows,
+                                     const std::map<std::string, Rate>& calibrated);
+std::string equivalence_replicas_markdown(const std::vector<EquivalenceReplicas>& rows,
+                                          const std::map<std::string, Rate>& calibrated);
 // What a verdict assumes and how its outcomes are defined, with the margins in force.
 std::string how_to_read_verdicts(const StudyConfig& config, const Analysis& a);
 // Per variant: ⟨ζ²⟩ of the force's numbers with its CI and the temperature shift it predicts, beside the shift
