@@ -35,15 +35,21 @@ CliRun run_cli(const std::string& args) {
 // The first 10^5 bits of e as the reference's ASCII data files hold them (wrapped lines, as data.e is), in a
 // file of this process's own: ctest runs the tests of this file as parallel processes, and one writing a shared
 // file while another reads it would hand the reader a truncated input.
+// Removed when the process ends.
+struct ProcessFile {
+  std::string path;
+  ~ProcessFile() { std::remove(path.c_str()); }
+};
+
 const std::string& e_file() {
-  static const std::string path = [] {
+  static const ProcessFile file{[] {
     const std::string p = ::testing::TempDir() + "dpdrng_nist_e_" + std::to_string(getpid()) + ".txt";
     const BitSequence s = testing_::cached_expansion(testing_::Constant::e);
     std::ofstream f(p);
     for (std::size_t i = 0; i < 100000; ++i) f << (s[i] ? '1' : '0') << (i % 64 == 63 ? "\n" : "");
     return p;
-  }();
-  return path;
+  }()};
+  return file.path;
 }
 
 int count_lines(const std::string& s) { return static_cast<int>(std::count(s.begin(), s.end(), '\n')); }
