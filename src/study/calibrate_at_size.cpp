@@ -4,6 +4,7 @@
 // sitting can be carried over in those files alone: a study with a record is never computed again.
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -13,6 +14,7 @@
 #include "calibrate_common.hpp"
 #include "dpdrng/common/error.hpp"
 #include "dpdrng/common/output.hpp"
+#include "dpdrng/stats/equivalence.hpp"
 #include "dpdrng/study/store.hpp"
 
 namespace dpdrng::study {
@@ -41,6 +43,9 @@ struct NullStudy {
     std::size_t passes = 0, tests = 0;
   };
   std::vector<Equivalence> equivalence;
+  // Per scalar observable, the normal score of each variant's shift against the reference: N(0, 1) when the
+  // error model is right. Empty in records written before they were kept.
+  std::map<std::string, std::vector<double>> scores;
   std::size_t failed = 0;
   double cell_seconds = 0;
 };
@@ -51,7 +56,8 @@ nlohmann::json to_json(const NullStudy& n) {
     eq.push_back({{"observable", e.observable}, {"margin", e.margin}, {"passes", e.passes}, {"tests", e.tests}});
   return {{"study", n.study},         {"alarmed", n.alarmed},   {"alarms", n.alarms},
           {"verdicts", n.verdicts},   {"tests", n.tests},       {"p_values", n.p_values},
-          {"equivalence", eq},        {"failed_cells", n.failed}, {"cell_seconds", n.cell_seconds}};
+          {"equivalence", eq},        {"scores", n.scores},     {"failed_cells", n.failed},
+          {"cell_seconds", n.cell_seconds}};
 }
 
 NullStudy null_study_from(const nlohmann::json& j) {
@@ -65,6 +71,7 @@ NullStudy null_study_from(const nlohmann::json& j) {
   for (const auto& e : j.at("equivalence"))
     n.equivalence.push_back({e.at("observable").get<std::string>(), e.at("margin").get<double>(),
                              e.at("passes").get<std::size_t>(), e.at("tests").get<std::size_t>()});
+  if (j.contains("scores")) n.scores = j.at("scores").get<std::map<std::string, std::vector<double>>>();
   n.failed = j.at("failed_cells").get<std::size_t>();
   n.cell_seconds = j.at("cell_seconds").get<double>();
   return n;
@@ -106,6 +113,7 @@ NullStudy analyse_null_study(const StudyConfig& pool, const Layout& l, const std
     n.alarms += d;
     append_p_values(v, n.p_values);
     for (const auto& o : v.observables) {
+      if (o.available && std::isfinite(o.score)) n.scores[o.observable].push_back(o.score);
       if (!o.available || !o.equivalence.tested()) continue;
       auto& e = eq[o.observable];
       e.observable = o.observable, e.margin = o.margin;
@@ -156,6 +164,12 @@ void add_up(Calibration& out, const std::vector<NullStudy>& done, const Layout& 
   out.nulls.push_back(std::move(row));
   for (const auto& [name, e] : eq)
     out.equivalence.push_back({l.r, l.r_ref, name, e.margin, make_rate(e.passes, e.tests)});
+  std::map<std::string, std::vector<double>> scores;
+  for (const auto& n : done) {
+    out.scored_studies += !n.scores.empty();
+    for (const auto& [name, z] : n.scores) scores[name].insert(scores[name].end(), z.begin(), z.end());
+  }
+  for (const auto& [name, z] : scores) out.dispersion.push_back({name, stats::score_dispersion(z)});
 }
 
 }  // namespace

@@ -140,8 +140,8 @@ std::string at_size_markdown(const Calibration& c) {
      << c.reference_replicas << ", the config's), so the studies of one replica count are disjoint and independent.\n"
      << "- Intervals: central 95 % Clopper–Pearson.\n"
      << "- Each null study is analysed once its cells are stored and kept in `pool/null-studies/` (its verdicts, "
-        "P-values and equivalence outcomes), so the calibration can be carried over several sittings in those "
-        "files alone.\n\n";
+        "P-values, equivalence outcomes and normal scores), so the calibration can be carried over several "
+        "sittings in those files alone.\n\n";
   if (!c.nulls.empty() && int(c.nulls.front().studies.trials) < c.null_studies_planned)
     md << "**Partial:** " << c.nulls.front().studies.trials << " of the " << c.null_studies_planned
        << " null studies asked for are recorded; rerun the same command to add the others.\n\n";
@@ -160,6 +160,21 @@ std::string at_size_markdown(const Calibration& c) {
     for (const auto& e : c.equivalence)
       md << "| " << e.replicas << " | " << e.reference_replicas << " | " << e.observable << " | "
          << detail::num(e.margin) << " | " << rate_text(e.equivalent) << " |\n";
+    md << "\n";
+  }
+  if (!c.dispersion.empty()) {
+    const std::size_t studies = c.nulls.empty() ? 0 : c.nulls.front().studies.trials;
+    md << "## Error model check\n\nEvery good variant's shift against the reference, as a normal score under "
+          "the error model the verdicts use (stats::normal_score of its t): N(0, 1) when the standard errors are "
+          "right. The ratio is the scores' mean square with its 95 % χ² interval (`score_dispersion.csv`); above 1 "
+          "the standard errors are too small and the verdicts too bold, below 1 they are conservative. Variants of "
+          "one null study share its reference replicas, so their scores are correlated and the interval is too "
+          "narrow by an unknown amount. From the "
+       << c.scored_studies << " of " << studies << " recorded null studies whose records hold scores.\n\n"
+       << "| observable | comparisons | mean square [95 % CI] |\n|---|---|---|\n";
+    for (const auto& d : c.dispersion)
+      md << "| " << d.observable << " | " << d.scores.k << " | " << detail::fmt("%.3f", d.scores.ratio) << " ["
+         << detail::fmt("%.3f", d.scores.low) << ", " << detail::fmt("%.3f", d.scores.high) << "] |\n";
     md << "\n";
   }
   cost_section(c, md);
@@ -210,6 +225,15 @@ std::string false_alarms_csv(const Calibration& c) {
     o << n.replicas << ',' << n.verdicts.trials << ',' << n.verdicts.events << ',' << n.verdicts.rate << ','
       << n.verdicts.low << ',' << n.verdicts.high << ',' << n.studies.trials << ',' << n.studies.events << ','
       << n.studies.rate << ',' << n.studies.low << ',' << n.studies.high << '\n';
+  return o.str();
+}
+
+std::string score_dispersion_csv(const Calibration& c) {
+  std::ostringstream o;
+  o << "observable,studies,comparisons,ratio,ci95_low,ci95_high\n";
+  for (const auto& d : c.dispersion)
+    o << d.observable << "," << c.scored_studies << "," << d.scores.k << "," << detail::num(d.scores.ratio) << ","
+      << detail::num(d.scores.low) << "," << detail::num(d.scores.high) << "\n";
   return o.str();
 }
 
@@ -370,6 +394,11 @@ nlohmann::json to_json(const Calibration& c) {
   for (const auto& e : c.equivalence)
     eq.push_back({{"replicas", e.replicas}, {"reference_replicas", e.reference_replicas},
                   {"observable", e.observable}, {"margin", e.margin}, {"equivalent", rate_json(e.equivalent)}});
+  nlohmann::json dispersion = nlohmann::json::array();
+  const auto number = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(); };
+  for (const auto& d : c.dispersion)
+    dispersion.push_back({{"observable", d.observable}, {"comparisons", d.scores.k}, {"ratio", number(d.scores.ratio)},
+                          {"ci95_low", number(d.scores.low)}, {"ci95_high", number(d.scores.high)}});
   for (const auto& t : c.thresholds)
     th.push_back({{"kind", t.kind}, {"replicas", t.replicas}, {"power", t.power},
                   {"size", std::isfinite(t.size) ? nlohmann::json(t.size) : nlohmann::json()},
@@ -382,6 +411,7 @@ nlohmann::json to_json(const Calibration& c) {
           {"at_size", c.at_size},        {"reference_replicas", c.reference_replicas},
           {"null_studies_planned", c.null_studies_planned},
           {"false_alarms", nulls},       {"power", power},              {"equivalence", eq},
+          {"score_dispersion", {{"studies", c.scored_studies}, {"rows", dispersion}}},
           {"thresholds", th},            {"cells", c.cells},
           {"computed", c.computed},      {"resumed", c.resumed},
           {"failed", c.failed},          {"wall_seconds", c.seconds}, {"wall_seconds_total", c.wall_total},
@@ -392,10 +422,12 @@ void write_calibration(const Calibration& c, const fs::path& dir, bool charts, s
   fs::create_directories(dir);
   write_text_file(dir / "calibration.json", to_json(c).dump(2) + "\n");
   write_text_file(dir / "false_alarms.csv", false_alarms_csv(c));
-  if (c.at_size)
+  if (c.at_size) {
     write_text_file(dir / "equivalence.csv", equivalence_csv(c));
-  else
+    write_text_file(dir / "score_dispersion.csv", score_dispersion_csv(c));
+  } else {
     write_text_file(dir / "power.csv", power_csv(c));
+  }
   write_text_file(dir / "null_p_qq.csv", null_qq_csv(c));
   write_text_file(dir / "summary.md", summary_markdown(c));
   if (!charts) return;

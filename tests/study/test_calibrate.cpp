@@ -313,6 +313,30 @@ TEST(Calibrate, AtSizeNullStudiesHaveTheStudysVariants) {
   EXPECT_TRUE(temperature);
   EXPECT_EQ(c.null_studies_planned, 6);
 
+  // The error model's check: every variant's normal score per scalar observable, kept in each record and pooled
+  // over the null studies. Slot 1's planted 5 % heating makes its temperature scores far from N(0, 1); pressure
+  // stays near 1.
+  EXPECT_EQ(c.scored_studies, 6u);
+  const auto dispersion = [&](const Calibration& cal, const std::string& name) {
+    for (const auto& d : cal.dispersion)
+      if (d.observable == name) return d.scores;
+    throw std::runtime_error("no dispersion row " + name);
+  };
+  EXPECT_EQ(dispersion(c, "temperature_mean").k, 6 * slots * noises);
+  EXPECT_GT(dispersion(c, "temperature_mean").low, 10.0);
+  {
+    std::vector<double> z;
+    for (int s = 0; s < 6; ++s) {
+      char name[32];
+      std::snprintf(name, sizeof name, "study-%03d.json", s);
+      const auto j = nlohmann::json::parse(read_whole_file(store.dir() / "null-studies" / name));
+      for (double x : j.at("scores").at("pressure_mean").get<std::vector<double>>()) z.push_back(x);
+    }
+    const auto by_hand = dpdrng::stats::score_dispersion(z);
+    EXPECT_EQ(dispersion(c, "pressure_mean").k, by_hand.k);
+    EXPECT_EQ(dispersion(c, "pressure_mean").ratio, by_hand.ratio);
+  }
+
   // The study's report, with this calibration in a directory beside it, quotes its false-alarm rate and says that
   // the detection limit was not calibrated at this size.
   write_calibration(c, tmp.path / "at-size", false, nullptr);
@@ -360,6 +384,22 @@ TEST(Calibrate, AtSizeNullStudiesHaveTheStudysVariants) {
   EXPECT_EQ(std::size_t(again.calls), slots * noises * 3 + noises * 5);
   EXPECT_EQ(redone.nulls[0].p_values.size(), c.nulls[0].p_values.size());
   EXPECT_EQ(redone.nulls[0].studies.events, 6u);
+
+  // A record written before scores were kept still counts; the check says how many records it rests on.
+  {
+    const auto p = store.dir() / "null-studies" / "study-001.json";
+    auto j = nlohmann::json::parse(read_whole_file(p));
+    j.erase("scores");
+    write_file_atomically(p, j.dump() + "\n");
+    const Calibration older = rerun();
+    EXPECT_EQ(older.nulls[0].studies.trials, 6u);
+    EXPECT_EQ(older.scored_studies, 5u);
+    EXPECT_EQ(dispersion(older, "temperature_mean").k, 5 * slots * noises);
+    write_calibration(older, tmp.path / "older", false, nullptr);
+    const std::string md = read_whole_file(tmp.path / "older" / "summary.md");
+    EXPECT_NE(md.find("From the 5 of 6 recorded null studies whose records hold scores."), std::string::npos);
+    EXPECT_TRUE(fs::exists(tmp.path / "older" / "score_dispersion.csv"));
+  }
 
   // A damaged record is an error that names it, not a silently smaller calibration.
   write_file_atomically(store.dir() / "null-studies" / "study-002.json", "{\"study\": 2");

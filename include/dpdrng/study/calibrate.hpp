@@ -20,6 +20,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "dpdrng/stats/equivalence.hpp"
 #include "dpdrng/study/config.hpp"
 #include "dpdrng/study/runner.hpp"
 #include "dpdrng/study/store.hpp"
@@ -82,6 +83,13 @@ struct EquivalenceRow {
   Rate equivalent;  // variant verdicts (slot × noise) whose equivalence test passes
 };
 
+// The error model's check on null comparisons (at_size): per scalar observable, the dispersion of the normal
+// scores of every good variant's shift over the null studies; 1 when the standard errors are right.
+struct DispersionRow {
+  std::string observable;
+  stats::Dispersion scores;
+};
+
 struct PowerRow {
   std::string kind;  // "variance", "lag1", "mean"
   double size = 0;
@@ -114,6 +122,8 @@ struct Calibration {
   int null_studies_planned = 0;
   std::vector<NullRow> nulls;
   std::vector<EquivalenceRow> equivalence;  // at_size only
+  std::vector<DispersionRow> dispersion;    // at_size only
+  std::size_t scored_studies = 0;           // null studies whose records hold scores (at_size)
   std::vector<PowerRow> power;
   std::vector<Threshold> thresholds;
   std::size_t cells = 0, computed = 0, resumed = 0, failed = 0;
