@@ -123,9 +123,15 @@ void SortedCells::places(std::size_t t, std::size_t team) {
 
 void SortedCells::fill_forward() {
   forward_.assign(gridded() ? std::size_t(ncell_) * kForward : 0, 0);
+  wraps_.assign(std::size_t(ncell_), 1);
   if (!gridded()) return fill_runs();
+  // Beads of neighbouring cells lie less than two widths apart (a rounding aside), which with 5 or more cells
+  // along an axis is less than the half edge of 2.5 widths or more.
+  const bool wide = n_[0] >= 5 && n_[1] >= 5 && n_[2] >= 5;
   for (int c = 0; c < ncell_; ++c) {
     const int cx = c % n_[0], cy = (c / n_[0]) % n_[1], cz = c / (n_[0] * n_[1]);
+    const bool inside = cx >= 1 && cx + 1 < n_[0] && cy >= 1 && cy + 1 < n_[1] && cz + 1 < n_[2];
+    wraps_[std::size_t(c)] = !(wide && inside);
     std::int32_t* out = forward_.data() + std::size_t(c) * kForward;
     int k = 0;
     for (int dz = 0; dz <= 1; ++dz)

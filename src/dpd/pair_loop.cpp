@@ -196,6 +196,17 @@ class PairLoop final : public PairForces {
       gx.resize(n), gy.resize(n), gz.resize(n), cw.resize(n), w.resize(n);
     }
     pair_filter::Out out() { return {dx.data(), dy.data(), dz.data(), r2.data(), j.data()}; }
+    // cells: the candidates of the cell at hand (list_candidates), `listed` of them, and room past them for
+    // the whole-vector copies and loads.
+    std::vector<double> lx, ly, lz;
+    std::vector<std::uint32_t> lid;
+    std::uint32_t listed = 0;
+    void grow_list(std::size_t n) {
+      if (lx.size() >= n) return;
+      n = std::max(n, 2 * lx.size());
+      lx.resize(n), ly.resize(n), lz.resize(n), lid.resize(n);
+    }
+    pair_filter::Listed list() const { return {lx.data(), ly.data(), lz.data(), lid.data()}; }
   };
   struct CellSums {
     double w[3] = {0, 0, 0}, wc[3] = {0, 0, 0};
@@ -422,8 +433,10 @@ class PairLoop final : public PairForces {
     sort_by_key(out);
   }
 
+  // The positions keep the filter's slack past the last bead (list_candidates copies whole vectors).
   void resize_sorted(std::size_t n) {
-    for (auto* a : {&xs_, &ys_, &zs_, &vxs_, &vys_, &vzs_, &fxs_, &fys_, &fzs_, &fcx_, &fcy_, &fcz_}) a->resize(n);
+    for (auto* a : {&xs_, &ys_, &zs_}) a->resize(n + pair_filter::kSlack);
+    for (auto* a : {&vxs_, &vys_, &vzs_, &fxs_, &fys_, &fzs_, &fcx_, &fcy_, &fcz_}) a->resize(n);
     types_.resize(n);
   }
 
@@ -464,20 +477,30 @@ class PairLoop final : public PairForces {
     return m;
   }
 
-  // Sorted bead a of cell c against the candidates after it (the rest of its cell, then the forward neighbours',
-  // straight from the sorted arrays, run by run): the pairs inside r_c, appended to sc from pair `off` on
-  // (partners' sorted indices in sc.j). Returns their number. sc must have room for the candidates and the
-  // filter's slack from `off` on.
+  // Cell c's candidates (its own beads, then its forward neighbours', run by run, in sorted order) copied into
+  // sc's list. Each of the cell's beads then filters one list in whole vectors instead of each run's ragged
+  // ends. The entries past the list's end hold positions or zeros (finite, and masked out by the filter).
+  void list_candidates(int c, Scratch& sc) const {
+    const std::size_t m = candidates(c);
+    sc.grow_list(m + 2 * pair_filter::kSlack);
+    const SortedCells::Run* runs = cells_.runs(c);
+    std::size_t t = 0;
+    for (int r = 0; r < cells_.run_count(c); ++r)
+      t = pair_filter::list_range(xs_.data(), ys_.data(), zs_.data(), cells_.begin(runs[r].first),
+                                  cells_.end(runs[r].last), sc.lx.data(), sc.ly.data(), sc.lz.data(), sc.lid.data(), t);
+    sc.listed = std::uint32_t(t);
+  }
+
+  // Sorted bead a of cell c against the candidates after it in c's list (list_candidates: the rest of its cell,
+  // then the forward neighbours'): the pairs inside r_c, appended to sc from pair `off` on (partners' sorted
+  // indices in sc.j). Returns their number. sc must have room for the candidates and the filter's slack from
+  // `off` on.
   std::size_t in_range(const Box& box, int c, std::uint32_t a, std::size_t off, Scratch& sc) const {
     const pair_filter::Centre ctr = pair_filter::centre(box, xs_[a], ys_[a], zs_[a], k_.rc2());
-    const pair_filter::Out out = sc.out();
-    const SortedCells::Run* runs = cells_.runs(c);
-    std::size_t kept = off;
-    for (int r = 0; r < cells_.run_count(c); ++r) {
-      const std::uint32_t lo = r == 0 ? a + 1 : cells_.begin(runs[r].first);
-      kept = pair_filter::append_in_range(xs_.data(), ys_.data(), zs_.data(), lo, cells_.end(runs[r].last), ctr, out,
-                                          kept);
-    }
+    const std::uint32_t lo = a - cells_.begin(c) + 1;
+    const std::size_t kept = cells_.wraps(c)
+                                 ? pair_filter::append_listed<true>(sc.list(), lo, sc.listed, ctr, sc.out(), off)
+                                 : pair_filter::append_listed<false>(sc.list(), lo, sc.listed, ctr, sc.out(), off);
     return kept - off;
   }
 
@@ -488,6 +511,7 @@ class PairLoop final : public PairForces {
 
   std::uint64_t count_cell(const Box& box, int c, Scratch& sc) const {
     room_for_cell(c, 0, sc);
+    list_candidates(c, sc);
     std::uint64_t count = 0;
     for (std::uint32_t a = cells_.begin(c); a < cells_.end(c); ++a) count += in_range(box, c, a, 0, sc);
     return count;
@@ -502,6 +526,7 @@ class PairLoop final : public PairForces {
     std::size_t off = 0;
     for (int c = c0; c < c1; ++c) {
       room_for_cell(c, off, sc);
+      list_candidates(c, sc);
       for (std::uint32_t a = cells_.begin(c); a < cells_.end(c); ++a) {
         const std::size_t k = in_range(box, c, a, off, sc);
         std::fill_n(sc.own.data() + off, k, a);

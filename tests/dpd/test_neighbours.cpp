@@ -69,6 +69,35 @@ TEST(SortedCells, EveryPairInsideTheCutoffIsOwnedOnce) {
   }
 }
 
+// What lets the filter skip min_image: for a cell that does not wrap, every bead of the cell and every
+// candidate (own cell, forward cells) lie within half an edge of each other along each axis, so the plain
+// difference is the minimum image. An 8 × 8 × 8 grid (some cells wrap, some do not), and one of 4 × 4 × 4 and
+// the paper's 3 × 3 × 4, where every cell counts as wrapping (fewer than 5 cells along an axis).
+TEST(SortedCells, CellsThatDoNotWrapNeedNoMinimumImage) {
+  for (auto [n, L] : {std::pair<std::size_t, double>{1500, 8.0}, {192, 4.0}, {256, std::cbrt(256 / 3.0)}}) {
+    const System s = fluid(n, L);
+    SortedCells g;
+    g.build(s, 1.0);
+    ASSERT_TRUE(g.gridded());
+    int plain = 0;
+    for (int c = 0; c < g.cells(); ++c) {
+      if (g.wraps(c)) continue;
+      ++plain;
+      std::vector<int> cand{c};
+      for (int f = 0; f < g.forward_count(); ++f) cand.push_back(g.forward(c)[f]);
+      for (std::uint32_t a = g.begin(c); a < g.end(c); ++a)
+        for (const int d : cand)
+          for (std::uint32_t b = g.begin(d); b < g.end(d); ++b) {
+            const std::uint32_t i = g.order()[a], j = g.order()[b];
+            for (const auto& r : {&System::x, &System::y, &System::z})
+              ASSERT_LE(std::abs((s.*r)[j] - (s.*r)[i]), L / 2) << "cell " << c;
+          }
+    }
+    // Cells 1 … 6 along x and y and 0 … 6 along z of the 8-grid do not wrap.
+    EXPECT_EQ(plain, L == 8.0 ? 6 * 6 * 7 : 0) << "L = " << L;
+  }
+}
+
 // What lets the layers of a colour run in parallel: a cell writes to itself and its forward cells, and no two
 // layers of one colour write to the same cell.
 TEST(SortedCells, LayersOfOneColourWriteDisjointCells) {

@@ -1,6 +1,7 @@
-// The pair loop's SIMD candidate filters (compress-store and mask-then-recompute) against the scalar loop it stands for (min_image, r², keep r² < r_c²
-// in order, NaN out): the same pairs, in the same order, with the same bits, for every range length around
-// the vector width, ranges that start anywhere, and appends after pairs already kept.
+// The pair loop's SIMD candidate filters (compress-store over a gathered list, and mask-then-recompute)
+// against the scalar loop they stand for (min_image, r², keep r² < r_c² in order, NaN out): the same pairs, in
+// the same order, with the same bits, for every range length around the vector width, ranges that start
+// anywhere, lists gathered from several ranges, and appends after pairs already kept.
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -43,6 +44,20 @@ std::size_t plain(const std::vector<double>& x, const std::vector<double>& y, co
 
 std::uint64_t bits(double v) { return std::bit_cast<std::uint64_t>(v); }
 
+// a holds the same ka pairs after the `before` already kept as the reference b's kb, to the bit; the first
+// `before` are untouched.
+void expect_same(const Pairs& a, std::size_t ka, const Pairs& b, std::size_t kb, std::size_t before) {
+  ASSERT_EQ(ka, kb);
+  for (std::size_t t = 0; t < before; ++t) EXPECT_EQ(a.r2[t], -7.0);
+  for (std::size_t t = before; t < ka; ++t) {
+    EXPECT_EQ(a.j[t], b.j[t]) << t;
+    EXPECT_EQ(bits(a.dx[t]), bits(b.dx[t]));
+    EXPECT_EQ(bits(a.dy[t]), bits(b.dy[t]));
+    EXPECT_EQ(bits(a.dz[t]), bits(b.dz[t]));
+    EXPECT_EQ(bits(a.r2[t]), bits(b.r2[t]));
+  }
+}
+
 }  // namespace
 
 TEST(PairFilter, MatchesTheScalarLoopForEveryRange) {
@@ -66,35 +81,75 @@ TEST(PairFilter, MatchesTheScalarLoopForEveryRange) {
         const std::size_t before = 3;  // pairs already kept: appended after them
         Pairs b(before + (hi - lo) + pf::kSlack);
         const std::size_t kb = plain(x, y, z, lo, hi, c, b, before);
-        for (const bool sparse : {false, true}) {
-          Pairs a(before + (hi - lo) + pf::kSlack);
-          const std::size_t ka = sparse ? pf::append_sparse(x.data(), y.data(), z.data(), lo, hi, c, a.out(), before)
-                                        : pf::append_in_range(x.data(), y.data(), z.data(), lo, hi, c, a.out(), before);
-          ASSERT_EQ(ka, kb) << centre << " " << lo << " " << len << " sparse " << sparse;
-          for (std::size_t t = 0; t < before; ++t) EXPECT_EQ(a.r2[t], -7.0);  // untouched
-          for (std::size_t t = before; t < ka; ++t) {
-            EXPECT_EQ(a.j[t], b.j[t]);
-            EXPECT_EQ(bits(a.dx[t]), bits(b.dx[t]));
-            EXPECT_EQ(bits(a.dy[t]), bits(b.dy[t]));
-            EXPECT_EQ(bits(a.dz[t]), bits(b.dz[t]));
-            EXPECT_EQ(bits(a.r2[t]), bits(b.r2[t]));
-          }
-        }
+        Pairs a(before + (hi - lo) + pf::kSlack);
+        const std::size_t ka = pf::append_sparse(x.data(), y.data(), z.data(), lo, hi, c, a.out(), before);
+        expect_same(a, ka, b, kb, before);
       }
 }
 
-// A range whose every candidate is inside r_c keeps them all, in order; one with none keeps nothing.
+// A list gathered from five ranges, one empty (as a cell's candidates are, run by run), and filtered from any start:
+// the scalar loop over the same candidates, with min_image; and without it (Wrap = false) where every
+// candidate lies within half an edge of the centre, which gives the same bits.
+TEST(PairFilter, ListedCandidatesMatchTheScalarLoop) {
+  Box box;
+  box.L = {4.0, 5.0, 6.0};
+  std::mt19937_64 g(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const std::size_t n = 300;
+  std::vector<double> x(n + pf::kSlack), y(n + pf::kSlack), z(n + pf::kSlack);
+  for (std::size_t k = 0; k < n; ++k) x[k] = 4.0 * u(g), y[k] = 5.0 * u(g), z[k] = 6.0 * u(g);
+  x[40] = std::numeric_limits<double>::quiet_NaN();
+  // Ranges of every length around the vector width, one of them empty.
+  const std::uint32_t ranges[][2] = {{30, 47}, {100, 100}, {150, 159}, {200, 201}, {250, 266}};
+  std::vector<double> lx(n + 2 * pf::kSlack), ly(lx.size()), lz(lx.size());
+  std::vector<std::uint32_t> id(lx.size());
+  std::size_t t = 0;
+  for (const auto& r : ranges) t = pf::list_range(x.data(), y.data(), z.data(), r[0], r[1], lx.data(), ly.data(),
+                                                  lz.data(), id.data(), t);
+  ASSERT_EQ(t, 17u + 0u + 9u + 1u + 16u);
+  std::vector<double> cx, cy, cz;  // the listed candidates, for the reference
+  for (const auto& r : ranges)
+    for (std::uint32_t k = r[0]; k < r[1]; ++k) cx.push_back(x[k]), cy.push_back(y[k]), cz.push_back(z[k]);
+  for (std::size_t k = 0; k < t; ++k) {
+    ASSERT_EQ(bits(lx[k]), bits(cx[k]));
+    ASSERT_EQ(bits(lz[k]), bits(cz[k]));
+  }
+  const pf::Listed list{lx.data(), ly.data(), lz.data(), id.data()};
+  for (const std::uint32_t centre : {0u, 3u, 99u, 280u})
+    for (std::uint32_t lo = 0; lo <= t; ++lo) {
+      const pf::Centre c = pf::centre(box, x[centre], y[centre], z[centre], 1.44);
+      Pairs b(t + pf::kSlack + 3), a(t + pf::kSlack + 3);
+      const std::size_t kb = plain(cx, cy, cz, lo, std::uint32_t(t), c, b, 3);
+      for (std::size_t q = 3; q < kb; ++q) b.j[q] = id[b.j[q]];  // list index → partner id
+      expect_same(a, pf::append_listed<true>(list, lo, std::uint32_t(t), c, a.out(), 3), b, kb, 3);
+    }
+  // Within half an edge of the centre (2, 2.5, 3) along every axis: min_image changes nothing.
+  const pf::Centre mid = pf::centre(box, 2.0, 2.5, 3.0, 1.44);
+  for (std::size_t k = 0; k < t; ++k) lx[k] = 0.1 + 3.8 * u(g), ly[k] = 0.1 + 4.8 * u(g), lz[k] = 0.1 + 5.8 * u(g);
+  cx.assign(lx.begin(), lx.begin() + std::ptrdiff_t(t)), cy.assign(ly.begin(), ly.begin() + std::ptrdiff_t(t));
+  cz.assign(lz.begin(), lz.begin() + std::ptrdiff_t(t));
+  for (std::uint32_t lo = 0; lo <= t; ++lo) {
+    Pairs b(t + pf::kSlack), a(t + pf::kSlack);
+    const std::size_t kb = plain(cx, cy, cz, lo, std::uint32_t(t), mid, b, 0);
+    for (std::size_t q = 0; q < kb; ++q) b.j[q] = id[b.j[q]];
+    expect_same(a, pf::append_listed<false>(list, lo, std::uint32_t(t), mid, a.out(), 0), b, kb, 0);
+  }
+}
+
+// A list whose every candidate is inside r_c keeps them all, in order; one with none keeps nothing.
 TEST(PairFilter, KeepsAllOrNothing) {
   Box box;
   box.L = {10.0, 10.0, 10.0};
-  std::vector<double> x(21), y(21, 5.0), z(21, 5.0);
-  for (std::size_t k = 0; k < x.size(); ++k) x[k] = 5.0 + 0.01 * double(k);
+  std::vector<double> x(21 + pf::kSlack), y(x.size(), 5.0), z(x.size(), 5.0);
+  std::vector<std::uint32_t> id(x.size());
+  for (std::size_t k = 0; k < 21; ++k) x[k] = 5.0 + 0.01 * double(k), id[k] = std::uint32_t(100 + k);
+  const pf::Listed list{x.data(), y.data(), z.data(), id.data()};
   Pairs p(x.size() + pf::kSlack);
   const pf::Centre near = pf::centre(box, 5.0, 5.0, 5.0, 1.0);
-  ASSERT_EQ(pf::append_in_range(x.data(), y.data(), z.data(), 0, 21, near, p.out(), 0), 21u);
-  for (std::uint32_t t = 0; t < 21; ++t) EXPECT_EQ(p.j[t], t);
+  ASSERT_EQ(pf::append_listed<true>(list, 0, 21, near, p.out(), 0), 21u);
+  for (std::uint32_t t = 0; t < 21; ++t) EXPECT_EQ(p.j[t], 100 + t);
   const pf::Centre far = pf::centre(box, 0.0, 0.0, 0.0, 1.0);
-  EXPECT_EQ(pf::append_in_range(x.data(), y.data(), z.data(), 0, 21, far, p.out(), 0), 0u);
+  EXPECT_EQ(pf::append_listed<true>(list, 0, 21, far, p.out(), 0), 0u);
 }
 
 }  // namespace dpdrng_test::dpd_test_pair_filter

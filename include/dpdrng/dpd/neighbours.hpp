@@ -73,6 +73,11 @@ class SortedCells {
     std::int32_t first, last;
   };
   int run_count(int c) const { return run_count_[std::size_t(c)]; }
+  // Whether a separation between a bead of cell c and one of its candidates can exceed half a box edge in
+  // some dimension (its stencil wraps around the box, or the grid has fewer than 5 cells along a dimension),
+  // so that the minimum image can differ from the plain difference. When false, every candidate of c lies
+  // within two cell widths of c's beads along each axis, less than half the edge.
+  bool wraps(int c) const { return wraps_[std::size_t(c)] != 0; }
   const Run* runs(int c) const { return runs_.data() + std::size_t(c) * (kForward + 1); }
   std::uint64_t builds() const { return builds_; }
 
@@ -90,6 +95,7 @@ class SortedCells {
   std::vector<std::int32_t> forward_;  // kForward per cell, fixed order
   std::vector<Run> runs_;              // kForward + 1 per cell, run_count_ of them used
   std::vector<std::int32_t> run_count_;
+  std::vector<std::uint8_t> wraps_;    // per cell (wraps())
   std::uint64_t builds_ = 0;
 };
 

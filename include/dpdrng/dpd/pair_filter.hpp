@@ -1,8 +1,9 @@
 #pragma once
-// The candidate filter of the pair loop. One pass over a contiguous range of candidates
-// computes the minimum-image separations and r² a SIMD vector at a time and appends the pairs inside r_c,
-// compacted in order, to the output arrays: no per-candidate stores, no branch per candidate, one
-// compress (AVX-512) or table permute (AVX2) per vector. Every lane does the scalar code's IEEE operations in
+// The candidate filters of the pair loop. Cells mode: a cell's candidates, gathered from its runs of cells
+// into one list, pass a SIMD vector at a time (separations, r²) and the pairs inside r_c are appended,
+// compacted in order, to the output arrays: no per-candidate stores, no branch per candidate, one compress
+// (AVX-512) or table permute (AVX2) per vector; cells whose stencil cannot wrap skip min_image. All pairs: a
+// bit mask per 64 candidates, the few kept recomputed. Every lane does the scalar code's IEEE operations in
 // the scalar order (min_image, then (a·a + b·b) + c·c; contraction is off), so the kept pairs and their
 // separations are the scalar loop's bits on any of the three paths, and the native and portable builds agree.
 #include <bit>
@@ -46,6 +47,12 @@ inline constexpr int kW = 8;
 inline V set1(double v) { return _mm512_set1_pd(v); }
 inline V load(const double* p) { return _mm512_loadu_pd(p); }
 inline V load_part(const double* p, int n) { return _mm512_maskz_loadu_pd(__mmask8((1u << n) - 1), p); }
+inline void store(double* p, V v) { _mm512_storeu_pd(p, v); }
+// base, base + 1, … in kW 32-bit lanes.
+inline void put_iota(std::uint32_t* out, std::uint32_t base) {
+  const __m256i j = _mm256_add_epi32(_mm256_set1_epi32(int(base)), _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7));
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(out), j);
+}
 // d − (d < −h ? −L : d > h ? L : 0), as min_image.
 inline V min_image(V d, V L, V h, V neg_L, V neg_h) {
   const V up = _mm512_maskz_mov_pd(_mm512_cmp_pd_mask(d, h, _CMP_GT_OQ), L);
@@ -54,8 +61,9 @@ inline V min_image(V d, V L, V h, V neg_L, V neg_h) {
 }
 inline unsigned inside(V r2, V rc2) { return _mm512_cmp_pd_mask(r2, rc2, _CMP_LT_OQ); }
 inline void put(double* out, V v, unsigned m) { _mm512_storeu_pd(out, _mm512_maskz_compress_pd(__mmask8(m), v)); }
-inline void put_j(std::uint32_t* out, std::uint32_t base, unsigned m) {
-  const __m256i j = _mm256_add_epi32(_mm256_set1_epi32(int(base)), _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7));
+// The partners id[0, kW) whose bits are set in m, to the front, in order.
+inline void put_ids(std::uint32_t* out, const std::uint32_t* id, unsigned m) {
+  const __m256i j = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(id));
   _mm256_storeu_si256(reinterpret_cast<__m256i*>(out), _mm256_maskz_compress_epi32(__mmask8(m), j));
 }
 }  // namespace isa
@@ -72,6 +80,11 @@ inline V load(const double* p) { return _mm256_loadu_pd(p); }
 inline V load_part(const double* p, int n) {
   alignas(32) static constexpr std::int64_t kLanes[8] = {-1, -1, -1, -1, 0, 0, 0, 0};
   return _mm256_maskload_pd(p, _mm256_loadu_si256(reinterpret_cast<const __m256i*>(kLanes + 4 - n)));
+}
+inline void store(double* p, V v) { _mm256_storeu_pd(p, v); }
+inline void put_iota(std::uint32_t* out, std::uint32_t base) {
+  const __m128i j = _mm_add_epi32(_mm_set1_epi32(int(base)), _mm_setr_epi32(0, 1, 2, 3));
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(out), j);
 }
 // d − (d > h ? L : 0) + (−d > h ? L : 0): min_image's shift, exactly (the two tests exclude each other), from
 // L and h alone: with 16 registers, the negated constants would be spilled and reloaded every vector.
@@ -98,11 +111,12 @@ inline __m256i lanes(unsigned m) { return _mm256_load_si256(reinterpret_cast<con
 inline void put(double* out, V v, unsigned m) {
   _mm256_storeu_pd(out, _mm256_castsi256_pd(_mm256_permutevar8x32_epi32(_mm256_castpd_si256(v), lanes(m))));
 }
-inline void put_j(std::uint32_t* out, std::uint32_t base, unsigned m) {
-  // The 64-bit lanes' indices (2t, 2t + 1) halved are the partner offsets t, in the even 32-bit lanes.
-  const __m256i idx = _mm256_srli_epi32(lanes(m), 1);
-  const __m256i j = _mm256_add_epi32(_mm256_set1_epi32(int(base)), idx);
-  const __m256i even = _mm256_permutevar8x32_epi32(j, _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6));
+inline void put_ids(std::uint32_t* out, const std::uint32_t* id, unsigned m) {
+  // The table's halved lanes pick the kept ids into the even 32-bit lanes (the table's unused lanes are 0, so
+  // only the four loaded ids are ever read), which the second permute packs.
+  const __m256i ids = _mm256_castsi128_si256(_mm_loadu_si128(reinterpret_cast<const __m128i*>(id)));
+  const __m256i picked = _mm256_permutevar8x32_epi32(ids, _mm256_srli_epi32(lanes(m), 1));
+  const __m256i even = _mm256_permutevar8x32_epi32(picked, _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6));
   _mm_storeu_si128(reinterpret_cast<__m128i*>(out), _mm256_castsi256_si128(even));
 }
 }  // namespace isa
@@ -125,7 +139,12 @@ struct Lanes {
   struct Separation {
     isa::V a, b, d, r2;
   };
+  template <bool Wrap = true>
   Separation separation(isa::V px, isa::V py, isa::V pz) const {
+    if constexpr (!Wrap) {
+      const isa::V a = px - xi, b = py - yi, d = pz - zi;
+      return {a, b, d, a * a + b * b + d * d};
+    }
     const isa::V a = isa::min_image(px - xi, Lx, hx, nLx, nhx), b = isa::min_image(py - yi, Ly, hy, nLy, nhy),
                  d = isa::min_image(pz - zi, Lz, hz, nLz, nhz);
     return {a, b, d, a * a + b * b + d * d};
@@ -133,35 +152,60 @@ struct Lanes {
 };
 #endif
 
-// Appends the candidates k in [lo, hi) of (x, y, z) with r² < rc2 (NaN fails), in order, as pairs with
-// partner k to out from index `kept` on; returns the new count. The stores are unconditional: among a cell's
-// candidates ~1 in 6 is kept, and a branch past a vector without any would mispredict.
-inline std::size_t append_in_range(const double* x, const double* y, const double* z, std::uint32_t lo,
-                                   std::uint32_t hi, const Centre& c, const Out& out, std::size_t kept) {
+// Candidates gathered from several ranges into one list (a cell's own beads and its forward neighbours'):
+// positions and partner ids, contiguous, readable kSlack entries past the last (vector loads are whole-width;
+// the lanes past the end are masked out, and should hold finite values so that they cost no slow path).
+struct Listed {
+  const double *x, *y, *z;
+  const std::uint32_t* id;
+};
+
+// Appends the candidates k in [lo, hi) of (x, y, z) to a list being gathered (positions, and ids k) at
+// index `t`; returns the new length. Whole vectors: x, y and z must be readable kSlack entries past hi and the
+// list writable as far past its new end (the next range's copy overwrites the excess).
+inline std::size_t list_range(const double* x, const double* y, const double* z, std::uint32_t lo, std::uint32_t hi,
+                              double* lx, double* ly, double* lz, std::uint32_t* id, std::size_t t) {
+#if defined(__AVX512F__) && defined(__AVX512VL__) || defined(__AVX2__)
+  using namespace isa;
+  for (std::uint32_t k = lo; k < hi; k += kW) {
+    const std::size_t at = t + (k - lo);
+    store(lx + at, load(x + k)), store(ly + at, load(y + k)), store(lz + at, load(z + k));
+    put_iota(id + at, k);
+  }
+  return t + (hi - lo);
+#else
+  for (std::uint32_t k = lo; k < hi; ++k, ++t) lx[t] = x[k], ly[t] = y[k], lz[t] = z[k], id[t] = k;
+  return t;
+#endif
+}
+
+// Appends the listed candidates t in [lo, hi) with r² < rc2 (NaN fails), in order, as pairs with partner
+// id[t] to out from index `kept` on; returns the new count. One run of whole vectors however many ranges the
+// list was gathered from. Wrap = false skips min_image: only for a list whose every separation from the
+// centre lies within half a box edge in each dimension, where min_image returns its argument, so the kept
+// pairs and their bits are the same.
+template <bool Wrap>
+inline std::size_t append_listed(const Listed& l, std::uint32_t lo, std::uint32_t hi, const Centre& c,
+                                 const Out& out, std::size_t kept) {
 #if defined(__AVX512F__) && defined(__AVX512VL__) || defined(__AVX2__)
   using namespace isa;
   const Lanes at(c);
-  auto one = [&](V px, V py, V pz, std::uint32_t k, unsigned lanes) {
-    const Lanes::Separation s = at.separation(px, py, pz);
+  for (std::uint32_t k = lo; k < hi; k += kW) {
+    const unsigned lanes = hi - k >= std::uint32_t(kW) ? (1u << kW) - 1 : (1u << (hi - k)) - 1;
+    const Lanes::Separation s = at.separation<Wrap>(load(l.x + k), load(l.y + k), load(l.z + k));
     const unsigned m = inside(s.r2, at.rc2) & lanes;
     put(out.dx + kept, s.a, m), put(out.dy + kept, s.b, m), put(out.dz + kept, s.d, m), put(out.r2 + kept, s.r2, m);
-    put_j(out.j + kept, k, m);
+    put_ids(out.j + kept, l.id + k, m);
     kept += std::size_t(std::popcount(m));
-  };
-  std::uint32_t k = lo;
-  for (; k + kW <= hi; k += kW) one(load(x + k), load(y + k), load(z + k), k, (1u << kW) - 1);
-  if (k < hi) {
-    const int n = int(hi - k);
-    one(load_part(x + k, n), load_part(y + k, n), load_part(z + k, n), k, (1u << n) - 1);
   }
   return kept;
 #else
   for (std::uint32_t k = lo; k < hi; ++k) {
-    const double a = min_image(x[k] - c.x, c.Lx, c.hx), b = min_image(y[k] - c.y, c.Ly, c.hy),
-                 d = min_image(z[k] - c.z, c.Lz, c.hz);
+    double a = l.x[k] - c.x, b = l.y[k] - c.y, d = l.z[k] - c.z;
+    if constexpr (Wrap) a = min_image(a, c.Lx, c.hx), b = min_image(b, c.Ly, c.hy), d = min_image(d, c.Lz, c.hz);
     const double r2 = a * a + b * b + d * d;
     if (!(r2 < c.rc2)) continue;
-    out.dx[kept] = a, out.dy[kept] = b, out.dz[kept] = d, out.r2[kept] = r2, out.j[kept] = k;
+    out.dx[kept] = a, out.dy[kept] = b, out.dz[kept] = d, out.r2[kept] = r2, out.j[kept] = l.id[k];
     ++kept;
   }
   return kept;
