@@ -196,8 +196,8 @@ class PairLoop final : public PairForces {
       gx.resize(n), gy.resize(n), gz.resize(n), cw.resize(n), w.resize(n);
     }
     pair_filter::Out out() { return {dx.data(), dy.data(), dz.data(), r2.data(), j.data()}; }
-    // cells: the candidates of the cell at hand (list_candidates), `listed` of them, and room past them for
-    // the whole-vector copies and loads.
+    // A list of candidates and room past it for whole-vector copies and loads: cells, the candidates of the
+    // cell at hand (list_candidates), `listed` of them; all pairs, a row's candidates the prefilter passed.
     std::vector<double> lx, ly, lz;
     std::vector<std::uint32_t> lid;
     std::uint32_t listed = 0;
@@ -207,6 +207,7 @@ class PairLoop final : public PairForces {
       lx.resize(n), ly.resize(n), lz.resize(n), lid.resize(n);
     }
     pair_filter::Listed list() const { return {lx.data(), ly.data(), lz.data(), lid.data()}; }
+    pair_filter::ListRoom list_room() { return {lx.data(), ly.data(), lz.data(), lid.data()}; }
   };
   struct CellSums {
     double w[3] = {0, 0, 0}, wc[3] = {0, 0, 0};
@@ -232,6 +233,7 @@ class PairLoop final : public PairForces {
   void all_rows(const Ctx& c) {
     const std::size_t n = c.s.size(), groups = (n + kGroup - 1) / kGroup;
     const bool batched = !Zero && !noise_->stream() && !c.tap;
+    if (batched) round_positions(c.s);
 #pragma omp parallel for num_threads(threads_) schedule(dynamic, 1)
     for (std::size_t g = 0; g < groups; ++g) {
       const auto i0 = static_cast<std::uint32_t>(g * kGroup);
@@ -242,6 +244,25 @@ class PairLoop final : public PairForces {
       }
       for (std::uint32_t i = i0; i < i1; ++i) row_all<Zero>(c, i, omp_get_thread_num());
     }
+  }
+
+  // The positions rounded to float for the rows' prefilter (pair_filter::append_rounded), and its threshold.
+  void round_positions(const System& s) {
+    const std::size_t n = s.size();
+    for (auto* a : {&xf_, &yf_, &zf_}) a->resize(n + pair_filter::kSlackF);
+    double extent = std::max({s.box.L[0], s.box.L[1], s.box.L[2]});
+    for (std::size_t i = 0; i < n; ++i) {
+      xf_[i] = static_cast<float>(s.x[i]), yf_[i] = static_cast<float>(s.y[i]), zf_[i] = static_cast<float>(s.z[i]);
+      extent = std::max({extent, std::abs(s.x[i]), std::abs(s.y[i]), std::abs(s.z[i])});
+    }
+    threshold_f_ = pair_filter::rounded_threshold(k_.rc2(), extent);
+  }
+
+  // Row i's centre and box for the prefilter.
+  pair_filter::Rounded rounded(const Box& box, std::uint32_t i) const {
+    const auto Lx = static_cast<float>(box.L[0]), Ly = static_cast<float>(box.L[1]), Lz = static_cast<float>(box.L[2]);
+    return {xf_.data(), yf_.data(), zf_.data(), xf_[i], yf_[i], zf_[i], Lx, Ly, Lz, Lx / 2, Ly / 2, Lz / 2,
+            threshold_f_};
   }
 
   // Rows [i0, i1) under a hash: each row's pairs inside r_c collected one row after another, their ζ in one
@@ -256,10 +277,12 @@ class PairLoop final : public PairForces {
     std::size_t off = 0;
     for (std::uint32_t i = i0; i < i1; ++i) {
       const std::size_t m = n - i - 1;
-      sc.grow_pairs(off + m);
+      sc.grow_pairs(off + m + pair_filter::kSlack);
+      sc.grow_list(m + pair_filter::kSlackF);
       const pair_filter::Centre ctr = pair_filter::centre(s.box, s.x[i], s.y[i], s.z[i], rc2);
-      const std::size_t k = pair_filter::append_sparse(s.x.data(), s.y.data(), s.z.data(), i + 1,
-                                                       std::uint32_t(n), ctr, sc.out(), off) - off;
+      const std::size_t k = pair_filter::append_rounded(s.x.data(), s.y.data(), s.z.data(), rounded(s.box, i),
+                                                        i + 1, std::uint32_t(n), ctr, sc.list_room(), sc.out(),
+                                                        off) - off;
       std::fill_n(sc.pi.data() + off, k, i);
       sc.counts.push_back(std::uint32_t(k));
       off += k;
@@ -901,6 +924,8 @@ class PairLoop final : public PairForces {
   std::vector<std::pair<std::uint32_t, std::uint32_t>> tap_pairs_;
   std::vector<Row> rows_;  // all mode
   std::vector<double> fcx_, fcy_, fcz_;  // the conservative force per bead (cells mode: in sorted order)
+  std::vector<float> xf_, yf_, zf_;      // all mode: the positions rounded (round_positions)
+  float threshold_f_ = 0;
   std::vector<double> layer_force2_;     // cells mode: Σ|F^C|² over each layer's beads
   std::vector<Scratch> scratch_;
   // cells mode

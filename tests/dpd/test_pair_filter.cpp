@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -133,6 +134,56 @@ TEST(PairFilter, ListedCandidatesMatchTheScalarLoop) {
     const std::size_t kb = plain(cx, cy, cz, lo, std::uint32_t(t), mid, b, 0);
     for (std::size_t q = 0; q < kb; ++q) b.j[q] = id[b.j[q]];
     expect_same(a, pf::append_listed<false>(list, lo, std::uint32_t(t), mid, a.out(), 0), b, kb, 0);
+  }
+}
+
+// The all-pairs filter with the single-precision prefilter (append_rounded) against the exact one
+// (append_sparse): the same pairs, bits and order, in a small box (images shift every way) and a large one
+// (positions far from the origin, where rounding to float moves them most), with candidates placed just
+// inside and just outside r_c along random directions, a NaN, and rows of every length.
+TEST(PairFilter, RoundedPrefilterKeepsExactlyTheExactFiltersPairs) {
+  std::mt19937_64 g(99);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (const double L : {4.4, 1000.0}) {
+    Box box;
+    box.L = {L, L * 1.1, L * 0.9};
+    const std::size_t n = 700;
+    std::vector<double> x(n), y(n), z(n);
+    for (std::size_t k = 0; k < n; ++k) x[k] = box.L[0] * u(g), y[k] = box.L[1] * u(g), z[k] = box.L[2] * u(g);
+    // Beads 1 … 400 around bead 0 (and across the box's faces) at r = r_c (1 ± 1e-9 … 1 ± 1e-6).
+    for (std::size_t k = 1; k <= 400; ++k) {
+      const double c = 2 * u(g) - 1, phi = 6.283185307179586 * u(g), sn = std::sqrt(1 - c * c);
+      const double r = 1.0 + (k % 2 ? 1 : -1) * std::pow(10.0, -9.0 + 3.0 * u(g));
+      const double px = std::fmod(x[0] + r * sn * std::cos(phi) + box.L[0], box.L[0]);
+      const double py = std::fmod(y[0] + r * sn * std::sin(phi) + box.L[1], box.L[1]);
+      const double pz = std::fmod(z[0] + r * c + box.L[2], box.L[2]);
+      x[k] = px, y[k] = py, z[k] = pz;
+    }
+    x[500] = std::numeric_limits<double>::quiet_NaN();
+    std::vector<float> xf(n + pf::kSlackF), yf(xf.size()), zf(xf.size());
+    double extent = std::max({box.L[0], box.L[1], box.L[2]});
+    for (std::size_t k = 0; k < n; ++k) {
+      xf[k] = float(x[k]), yf[k] = float(y[k]), zf[k] = float(z[k]);
+      if (!std::isnan(x[k])) extent = std::max({extent, x[k], y[k], z[k]});
+    }
+    const float threshold = pf::rounded_threshold(1.0, extent);
+    std::vector<double> lx(n + pf::kSlackF), ly(lx.size()), lz(lx.size());
+    std::vector<std::uint32_t> id(lx.size());
+    std::size_t near = 0;
+    for (const std::uint32_t centre : {0u, 0u, 7u, 350u, 699u})
+      for (const std::uint32_t lo : {0u, 1u, 5u, 17u, 650u}) {
+        const pf::Centre c = pf::centre(box, x[centre], y[centre], z[centre], 1.0);
+        const auto Lx = float(box.L[0]), Ly = float(box.L[1]), Lz = float(box.L[2]);
+        const pf::Rounded f{xf.data(), yf.data(), zf.data(), xf[centre], yf[centre], zf[centre],
+                            Lx, Ly, Lz, Lx / 2, Ly / 2, Lz / 2, threshold};
+        Pairs a(n + pf::kSlack), b(n + pf::kSlack);
+        const std::size_t kb = pf::append_sparse(x.data(), y.data(), z.data(), lo, n, c, b.out(), 0);
+        const std::size_t ka = pf::append_rounded(x.data(), y.data(), z.data(), f, lo, n, c,
+                                                  {lx.data(), ly.data(), lz.data(), id.data()}, a.out(), 0);
+        expect_same(a, ka, b, kb, 0);
+        if (centre == 0) near += kb;
+      }
+    EXPECT_GT(near, 400u) << "L = " << L;  // about half the 400 placed at r_c are inside, in each of two rows
   }
 }
 

@@ -7,6 +7,7 @@
 // the scalar order (min_image, then (a·a + b·b) + c·c; contraction is off), so the kept pairs and their
 // separations are the scalar loop's bits on any of the three paths, and the native and portable builds agree.
 #include <bit>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -257,6 +258,127 @@ inline std::size_t append_sparse(const double* x, const double* y, const double*
       kept_pair(x, y, z, base + std::uint32_t(std::countr_zero(m)), c, out, kept++);
   }
   return kept;
+}
+
+// The all-pairs prefilter: positions rounded to float, r² in single precision (twice the lanes of a double
+// vector) against r_c² raised by a bound on every rounding involved, so that it passes every candidate inside
+// r_c and a few just outside; those it passes are recomputed in double precision (kept_pair) and kept on the
+// exact test, so the kept pairs and their bits are the exact filter's.
+struct Rounded {
+  const float *x, *y, *z;  // positions rounded to float, readable kSlackF entries past the last
+  float cx, cy, cz;        // the centre, rounded
+  float Lx, Ly, Lz, hx, hy, hz;
+  float threshold;         // rounded_threshold
+};
+
+inline constexpr std::size_t kSlackF = 16;
+
+// A float threshold above the single-precision r² of every pair with exact r² < rc2, for positions and box
+// edges of magnitude at most `extent`. Rounding a coordinate to float moves it by at most u·extent (u = 2⁻²⁴);
+// with the float difference, the float image shift and its subtraction, a component of the separation is off
+// by less than e = 16 u·max(extent, r_c), its magnitude included where the two precisions pick opposite
+// images (then both are within e of half the edge). So r_float < r + √3·e, and r² in float adds a relative
+// 5u: (r_c + 2e)²(1 + 8u), rounded up to a float, bounds it.
+inline float rounded_threshold(double rc2, double extent) {
+  const double u = 0x1p-24, rc = std::sqrt(rc2);
+  const double e = 16.0 * u * std::max(extent, rc);
+  const double t = (rc + 2.0 * e) * (rc + 2.0 * e) * (1.0 + 8.0 * u);
+  return std::nextafter(static_cast<float>(t), INFINITY);
+}
+
+#if defined(__AVX512F__) && defined(__AVX512VL__) || defined(__AVX2__)
+namespace isa_f {
+#if defined(__AVX512F__) && defined(__AVX512VL__)
+using V = __m512;
+inline constexpr int kW = 16;
+inline V set1(float v) { return _mm512_set1_ps(v); }
+inline V load(const float* p) { return _mm512_loadu_ps(p); }
+inline V min_image(V d, V L, V h) {
+  const V up = _mm512_maskz_mov_ps(_mm512_cmp_ps_mask(d, h, _CMP_GT_OQ), L);
+  const V neg_h = _mm512_sub_ps(_mm512_setzero_ps(), h), neg_L = _mm512_sub_ps(_mm512_setzero_ps(), L);
+  return _mm512_sub_ps(d, _mm512_mask_mov_ps(up, _mm512_cmp_ps_mask(d, neg_h, _CMP_LT_OQ), neg_L));
+}
+inline unsigned inside(V r2, V t) { return _mm512_cmp_ps_mask(r2, t, _CMP_LT_OQ); }
+// base + t for each lane t set in m, to the front, in order.
+inline void put_ids(std::uint32_t* out, std::uint32_t base, unsigned m) {
+  const __m512i j = _mm512_add_epi32(_mm512_set1_epi32(int(base)),
+                                     _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15));
+  _mm512_storeu_si512(out, _mm512_maskz_compress_epi32(__mmask16(m), j));
+}
+#else
+using V = __m256;
+inline constexpr int kW = 8;
+inline V set1(float v) { return _mm256_set1_ps(v); }
+inline V load(const float* p) { return _mm256_loadu_ps(p); }
+inline V min_image(V d, V L, V h) {
+  const V neg_d = _mm256_xor_ps(d, _mm256_set1_ps(-0.0f));
+  const V up = _mm256_and_ps(_mm256_cmp_ps(d, h, _CMP_GT_OQ), L);
+  const V down = _mm256_and_ps(_mm256_cmp_ps(neg_d, h, _CMP_GT_OQ), L);
+  return _mm256_sub_ps(d, _mm256_sub_ps(up, down));
+}
+inline unsigned inside(V r2, V t) { return unsigned(_mm256_movemask_ps(_mm256_cmp_ps(r2, t, _CMP_LT_OQ))); }
+// For each 8-bit mask, the lanes whose bits are set, to the front, in order.
+struct Table {
+  alignas(32) std::int32_t lanes[256][8];
+  constexpr Table() : lanes{} {
+    for (int m = 0; m < 256; ++m) {
+      int k = 0;
+      for (int t = 0; t < 8; ++t)
+        if (m >> t & 1) lanes[m][k++] = t;
+    }
+  }
+};
+inline constexpr Table kTable{};
+inline void put_ids(std::uint32_t* out, std::uint32_t base, unsigned m) {
+  const __m256i lanes = _mm256_load_si256(reinterpret_cast<const __m256i*>(kTable.lanes[m]));
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(out), _mm256_add_epi32(_mm256_set1_epi32(int(base)), lanes));
+}
+#endif
+}  // namespace isa_f
+
+// The candidates k in [lo, hi) the single-precision test passes, in order, to id; returns their number. id
+// must have room for hi − lo entries and kSlackF more.
+inline std::uint32_t maybe_ids(const Rounded& f, std::uint32_t lo, std::uint32_t hi, std::uint32_t* id) {
+  using namespace isa_f;
+  const V xi = set1(f.cx), yi = set1(f.cy), zi = set1(f.cz), t = set1(f.threshold);
+  const V Lx = set1(f.Lx), Ly = set1(f.Ly), Lz = set1(f.Lz), hx = set1(f.hx), hy = set1(f.hy), hz = set1(f.hz);
+  std::uint32_t n = 0;
+  for (std::uint32_t k = lo; k < hi; k += kW) {
+    const V a = min_image(load(f.x + k) - xi, Lx, hx), b = min_image(load(f.y + k) - yi, Ly, hy),
+            d = min_image(load(f.z + k) - zi, Lz, hz);
+    const unsigned lanes = hi - k >= std::uint32_t(kW) ? (1u << kW) - 1 : (1u << (hi - k)) - 1;
+    const unsigned m = inside(a * a + b * b + d * d, t) & lanes;
+    put_ids(id + n, k, m);
+    n += std::uint32_t(std::popcount(m));
+  }
+  return n;
+}
+#endif
+
+// Room for a list being gathered: positions and ids (Listed), writable kSlackF entries past the candidates.
+struct ListRoom {
+  double *x, *y, *z;
+  std::uint32_t* id;
+};
+
+// append_sparse with the single-precision prefilter (Rounded): the candidates it passes are gathered into
+// `room` and filtered exactly a vector at a time (append_listed with min_image): the same pairs, separations
+// and order.
+inline std::size_t append_rounded(const double* x, const double* y, const double* z, const Rounded& f,
+                                  std::uint32_t lo, std::uint32_t hi, const Centre& c, const ListRoom& room,
+                                  const Out& out, std::size_t kept) {
+#if defined(__AVX512F__) && defined(__AVX512VL__) || defined(__AVX2__)
+  const std::uint32_t t = maybe_ids(f, lo, hi, room.id);
+  for (std::uint32_t q = 0; q < t; ++q) {
+    const std::uint32_t k = room.id[q];
+    room.x[q] = x[k], room.y[q] = y[k], room.z[q] = z[k];
+  }
+  for (std::uint32_t e = t; e < t + kSlack; ++e) room.x[e] = room.y[e] = room.z[e] = 0.0;
+  return append_listed<true>(Listed{room.x, room.y, room.z, room.id}, 0, t, c, out, kept);
+#else
+  (void)f, (void)room;
+  return append_sparse(x, y, z, lo, hi, c, out, kept);
+#endif
 }
 
 }  // namespace dpdrng::dpd::pair_filter
