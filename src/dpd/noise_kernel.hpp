@@ -35,6 +35,7 @@ class NoiseKernelOf final : public NoiseKernel {
     if constexpr (kBatched) {
       if (!b.tap[0]) return row_batched(b, sc);
     }
+    if (!b.tap[0]) return row_kept(b, sc);
     Block* blk = sc.blk.data();
     double *dxs = b.dx, *dys = b.dy, *dzs = b.dz, *r2s = b.r2;
     const std::uint32_t i = b.i;
@@ -109,16 +110,39 @@ class NoiseKernelOf final : public NoiseKernel {
   // A batched generator is called once per batch and only for the pairs inside r_c (the other kernels hash every
   // candidate, in SIMD lanes): the same blocks for the pairs whose ζ is used.
   std::size_t row_batched(const RowBatch& b, Scratch& sc) {
-    std::size_t k = 0;
-    for (std::size_t t = 0; t < b.m; ++t) {
-      if (!(b.r2[t] < b.rc2)) continue;
-      b.j[k] = std::uint32_t(b.i + 1 + t);
-      b.dx[k] = b.dx[t], b.dy[k] = b.dy[t], b.dz[k] = b.dz[t], b.r2[k] = b.r2[t];
-      ++k;
-    }
+    const std::size_t k = keep_in_range(b);
     sc.i.assign(k, b.i);
     batch_zetas(sc, sc.i.data(), b.j, b.dx, b.dy, b.dz, b.step, k, b.zeta);
     if (b.used) copy_used(sc.blk.data(), sc.blk2.data(), k, b.used);
+    return k;
+  }
+
+  // The row's pairs inside r_c moved to its front, in order, with their partners in b.j; returns their number.
+  // Branch-free: a pair is copied to the next free place whether kept or not, which is never past it.
+  static std::size_t keep_in_range(const RowBatch& b) {
+    std::size_t k = 0;
+    for (std::size_t t = 0; t < b.m; ++t) {
+      b.j[k] = std::uint32_t(b.i + 1 + t);
+      b.dx[k] = b.dx[t], b.dy[k] = b.dy[t], b.dz[k] = b.dz[t], b.r2[k] = b.r2[t];
+      k += b.r2[t] < b.rc2 ? 1 : 0;
+    }
+    return k;
+  }
+
+  // A row without a tap: the blocks of its pairs inside r_c only (a stream's slots read where the pairs lie
+  // in the row), the same blocks the tapped path keeps.
+  std::size_t row_kept(const RowBatch& b, Scratch& sc) {
+    const std::size_t k = keep_in_range(b);
+    Block* blk = sc.blk.data();
+    const bool two = noise_.feed() == rng::Feed::blocks;
+    for (std::size_t q = 0; q < k; ++q) {
+      const rng::PairInput p{b.i, b.j[q], b.dx[q], b.dy[q], b.dz[q], b.step};
+      const std::size_t slot = b.slot + (b.j[q] - b.i - 1);
+      blk[q] = noise_.raw(p, slot);
+      if (two) sc.blk2[q] = noise_.raw2(p, slot);
+    }
+    noise_.zetas(blk, sc.blk2.data(), b.zeta, k);
+    if (b.used) copy_used(blk, sc.blk2.data(), k, b.used);
     return k;
   }
 

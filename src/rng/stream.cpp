@@ -162,7 +162,7 @@ void fill_stream(const GeneratorSpec& spec, std::uint64_t start, std::uint64_t o
   if (family_of(spec.name) == Family::mt19937) {
     Mt19937 mt(start);
     mt.engine.discard(2 * offset);
-    for (auto& w : out) w = mt.next64();
+    mt.fill64(out.data(), out.size());
     return;
   }
   check_counter(spec);
@@ -187,7 +187,7 @@ void fill_noise(const GeneratorSpec& spec, Distribution dist, std::uint64_t star
     std::array<std::uint64_t, kChunkCalls> words;
     for (std::size_t done = 0; done < out.size();) {
       const std::size_t n = std::min(kChunkCalls, out.size() - done);
-      for (std::size_t i = 0; i < n; ++i) words[i] = mt.next64();
+      mt.fill64(words.data(), n);
       map_words<1>(dist, std::span(words.data(), n), out.subspan(done, n));
       done += n;
     }

@@ -206,6 +206,32 @@ TEST(KatMt19937, TenThousandthOutputOfTheStandard) {
   EXPECT_EQ(ours.next64(), join32(hi, ref()));
 }
 
+// Our engine is std::mt19937's sequence: the standard's 10000th output, then, for several seeds, single draws,
+// bulk fills of lengths that straddle the 624-word regeneration, discards, and 64-bit words in bulk.
+TEST(KatMt19937, OwnEngineIsTheStandardsSequence) {
+  Mt19937Engine first;
+  first.discard(9999);
+  EXPECT_EQ(first(), 4123659995u);
+  for (const std::uint32_t seed : {5489u, 1u, 0u, 0xffffffffu, 20211012u}) {
+    std::mt19937 ref(seed);
+    Mt19937Engine ours(seed);
+    for (int i = 0; i < 1500; ++i) ASSERT_EQ(ours(), ref()) << "seed " << seed << " draw " << i;
+    std::vector<std::uint32_t> got;
+    for (const std::size_t n : {1u, 7u, 623u, 624u, 625u, 1300u, 0u, 2u}) {
+      got.assign(n, 0);
+      ours.fill(got.data(), n);
+      for (std::size_t t = 0; t < n; ++t) ASSERT_EQ(got[t], ref()) << "seed " << seed << " fill " << n;
+    }
+    ours.discard(1000), ref.discard(1000);
+    EXPECT_EQ(ours(), ref());
+  }
+  Mt19937 bulk(77), one(77);
+  std::vector<std::uint64_t> words(2000);
+  bulk.fill64(words.data(), 3);
+  bulk.fill64(words.data() + 3, words.size() - 3);
+  for (std::size_t t = 0; t < words.size(); ++t) ASSERT_EQ(words[t], one.next64()) << t;
+}
+
 // Matsumoto & Nishimura's init_by_array (mt19937ar.c, 2002), written from the published algorithm, to put the
 // reference's seeding into a std::mt19937 through its textual state (the 624 words, [rand.eng.mers]).
 std::array<std::uint32_t, 624> init_by_array(const std::vector<std::uint32_t>& key) {

@@ -127,10 +127,10 @@ struct StreamNoise {
   rng::Feed feed() const { return feed_; }
   void begin_step(std::size_t slots) {
     buffer.resize(slots);
-    for (auto& w : buffer) w = mt.next64();
+    mt.fill64(buffer.data(), slots);
     if (feed_ != rng::Feed::blocks) return;
     buffer2.resize(slots);
-    for (auto& w : buffer2) w = mt.next64();
+    mt.fill64(buffer2.data(), slots);
   }
   Block raw(const rng::PairInput&, std::size_t k) const { return {buffer[k]}; }
   Block raw2(const rng::PairInput&, std::size_t k) const { return {buffer2[k]}; }
