@@ -46,15 +46,18 @@ std::optional<std::string> locate(const std::string& explicit_path, bool disable
   return found;
 }
 
-Side not_applicable(const std::string& why) {
+Side not_applicable(const std::string& label, const std::string& why) {
   Side s;
+  s.label = label;
   s.not_applicable = why;
   return s;
 }
 
-Side measure(const std::string& launcher, const dpd::WaterConfig& cfg, const std::string& distribution,
-             const std::string& feed, int threads, int repeat, const std::function<double()>& dpdrng_round) {
+Side measure(const std::string& label, const std::string& launcher, const dpd::WaterConfig& cfg,
+             const std::string& distribution, const std::string& feed, int threads, int repeat,
+             const std::function<double()>& dpdrng_round) {
   Side s;
+  s.label = label;
   s.launcher = launcher;
   s.scene = scene_of(cfg);
   s.threads = threads;
@@ -63,11 +66,11 @@ Side measure(const std::string& launcher, const dpd::WaterConfig& cfg, const std
   try {
     for (int r = 0; r < repeat; ++r) {
       const std::string round = ", round " + std::to_string(r + 1) + " of " + std::to_string(repeat);
-      progress("bench dpd: beside LAMMPS, dpdrng" + round);
+      progress("bench dpd: " + label + " beside LAMMPS, dpdrng" + round);
       s.dpdrng_s.push_back(dpdrng_round());
-      progress("bench dpd: beside LAMMPS, pair_style dpd" + round);
+      progress("bench dpd: " + label + " beside LAMMPS, pair_style dpd" + round);
       s.own_s.push_back(lmp::run_scene(launcher, s.scene, s.own_style, threads).seconds);
-      progress("bench dpd: beside LAMMPS, pair_style dpd/hash" + round);
+      progress("bench dpd: " + label + " beside LAMMPS, pair_style dpd/hash" + round);
       s.hash_s.push_back(lmp::run_scene(launcher, s.scene, s.hash_style, threads).seconds);
     }
   } catch (const std::runtime_error& e) {
@@ -81,13 +84,13 @@ Side measure(const std::string& launcher, const dpd::WaterConfig& cfg, const std
 
 void print(const Side& s) {
   if (!s.measured()) {
-    std::cout << "\nbeside LAMMPS: not applicable: " << s.not_applicable;
+    std::cout << "\n" << s.label << " beside LAMMPS: not applicable: " << s.not_applicable;
     if (s.not_applicable == kNotBuilt) std::cout << " (lammps/build.sh builds build/lammps/lmp_dpdrng; --lammps PATH)";
     std::cout << "\n";
     return;
   }
   const auto& sc = s.scene;
-  std::cout << std::setprecision(4) << "\nbeside LAMMPS (" << s.launcher << "), cells scene: " << sc.particles
+  std::cout << std::setprecision(4) << "\nbeside LAMMPS (" << s.launcher << "), " << s.label << ": " << sc.particles
             << " beads, rho " << sc.density << ", a " << sc.a << ", gamma " << sc.gamma << ", dt " << sc.dt << ", "
             << sc.equilibrate << " + " << sc.steps << " steps, 1 rank x " << s.threads
             << " thread(s); " << s.dpdrng_s.size() << " rounds of the three in turn, medians\n"
@@ -101,9 +104,10 @@ void print(const Side& s) {
 }
 
 nlohmann::json to_json(const Side& s) {
-  if (!s.measured()) return {{"launcher", nullptr}, {"not_applicable", s.not_applicable}};
+  if (!s.measured()) return {{"scene_label", s.label}, {"launcher", nullptr}, {"not_applicable", s.not_applicable}};
   const auto& sc = s.scene;
-  return {{"launcher", s.launcher},
+  return {{"scene_label", s.label},
+          {"launcher", s.launcher},
           {"scene", {{"particles", sc.particles}, {"density", sc.density}, {"a", sc.a}, {"gamma", sc.gamma},
                      {"kT", sc.kT}, {"rc", sc.rc}, {"dt", sc.dt}, {"equilibrate", sc.equilibrate},
                      {"steps", sc.steps}}},

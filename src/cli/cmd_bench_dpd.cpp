@@ -4,9 +4,9 @@
 // headline: the all-pairs 256-bead run with tea32(8) against tea32(1) (Okada et al. 2021: RNG 40 % of the
 // time at 8 rounds, 1.5x faster at 1 round). The cells-mode 1- vs 2-thread comparison runs any one integrator;
 // a list of integrators times each one's step against GW-MVV's, the runs interleaved. When LAMMPS is built
-// (lmp_dpdrng: --lammps, build/lammps/ or PATH), the cells scene also runs in LAMMPS, with its own pair_style dpd
-// and with pair_style dpd/hash, in turn with dpdrng's tea32(1) run, and the table gives each cells row's speed
-// against LAMMPS's.
+// (lmp_dpdrng: --lammps, build/lammps/ or PATH), each scene of the table (cells; all pairs, the paper's fluid,
+// which LAMMPS runs with its neighbour list) also runs in LAMMPS, with its own pair_style dpd and with pair_style
+// dpd/hash, in turn with dpdrng's tea32(1) run, and the table gives each row's speed against LAMMPS's.
 #include <unistd.h>
 
 #include <algorithm>
@@ -512,28 +512,34 @@ nlohmann::json to_json(const IntegratorCost& c) {
   return out;
 }
 
-// The cells scene beside LAMMPS when the table has it and LAMMPS was found, and each row's speed against LAMMPS's
-// pair_style dpd (not applicable, with the reason, for the all-pairs rows and when LAMMPS has no figures).
-bench_dpd_lammps::Side beside_lammps(const BenchDpdArgs& a, const std::optional<std::string>& launcher,
-                                     const std::string& why, std::vector<Measured>& table) {
+// Each scene of the table beside LAMMPS when LAMMPS was found (the cells scene on --threads, the all-pairs
+// scene on one thread, as the table runs it), and each row's speed against LAMMPS's pair_style dpd on its scene
+// (not applicable, with the reason, when LAMMPS has no figures for it).
+std::vector<bench_dpd_lammps::Side> beside_lammps(const BenchDpdArgs& a, const std::optional<std::string>& launcher,
+                                                  const std::string& why, std::vector<Measured>& table) {
   const auto modes = split(a.pairs);
-  const bool cells = std::find(modes.begin(), modes.end(), "cells") != modes.end();
-  bench_dpd_lammps::Side side = bench_dpd_lammps::not_applicable(cells ? why : "no cells scene in --pairs");
-  if (cells && launcher) {
-    const Case tea1 = with_generator(scene(a, dpd::PairMode::cells, a.steps_cells), "tea32", 1);
-    side = bench_dpd_lammps::measure(*launcher, tea1.cfg, a.distribution, a.feed, a.threads, a.repeat,
-                                     [&] { return run_once(tea1).production_s; });
-  }
-  for (auto& m : table) {
-    if (m.pairs != "cells") {
-      m.cost.lammps_not_applicable = "LAMMPS runs the cells scene only";
-    } else if (side.measured()) {
-      m.cost.dpdrng_over_lammps = m.particle_steps_per_s / side.own_ps;
+  std::vector<bench_dpd_lammps::Side> sides;
+  for (const auto mode : {dpd::PairMode::cells, dpd::PairMode::all}) {
+    const bool cells = mode == dpd::PairMode::cells;
+    const std::string name(dpd::to_string(mode)), label = cells ? "cells scene" : "all-pairs scene";
+    if (std::find(modes.begin(), modes.end(), name) == modes.end()) continue;
+    if (!launcher) {
+      sides.push_back(bench_dpd_lammps::not_applicable(label, why));
     } else {
-      m.cost.lammps_not_applicable = side.not_applicable;
+      const Case tea1 = with_generator(scene(a, mode, cells ? a.steps_cells : a.steps_all), "tea32", 1);
+      const int threads = dpd::team_threads(tea1.cfg.threads, std::size_t(tea1.cfg.particles), tea1.cfg.team_beads);
+      sides.push_back(bench_dpd_lammps::measure(label, *launcher, tea1.cfg, a.distribution, a.feed, threads, a.repeat,
+                                                [&] { return run_once(tea1).production_s; }));
+    }
+    for (auto& m : table) {
+      if (m.pairs != name) continue;
+      if (sides.back().measured())
+        m.cost.dpdrng_over_lammps = m.particle_steps_per_s / sides.back().own_ps;
+      else
+        m.cost.lammps_not_applicable = sides.back().not_applicable;
     }
   }
-  return side;
+  return sides;
 }
 
 void run_bench_dpd(const BenchDpdArgs& a) {
@@ -598,7 +604,7 @@ void run_bench_dpd(const BenchDpdArgs& a) {
     return;
   }
   std::vector<Measured> table = a.scaling_only ? std::vector<Measured>{} : measure_table(a);
-  std::optional<bench_dpd_lammps::Side> beside;
+  std::vector<bench_dpd_lammps::Side> beside;
   if (!a.scaling_only) beside = beside_lammps(a, launcher, lammps_why, table);
   const Paper paper = a.scaling_only ? Paper{} : measure_paper(a);
   std::optional<Scaling> scaling;
@@ -608,7 +614,8 @@ void run_bench_dpd(const BenchDpdArgs& a) {
 
   if (a.json) {
     for (const auto& m : table) out["throughput"].push_back(to_json(m));
-    if (beside) out["lammps"] = bench_dpd_lammps::to_json(*beside);
+    for (const auto& side : beside)
+      out[side.label == "cells scene" ? "lammps" : "lammps_all_pairs"] = bench_dpd_lammps::to_json(side);
     if (!a.scaling_only)
       out["paper"] = {{"steps", paper.steps},
                       {"tea32_8_s", paper.t8.median_s},
@@ -631,7 +638,7 @@ void run_bench_dpd(const BenchDpdArgs& a) {
   }
   std::cout << cpu_model() << ", " << simd_width_bits() << "-bit SIMD (" << simd_name() << ")\n";
   if (!a.scaling_only) print_table(a, table), print_paper(a, paper);
-  if (beside) bench_dpd_lammps::print(*beside);
+  for (const auto& side : beside) bench_dpd_lammps::print(side);
   if (scaling) print_scaling(a, *scaling);
 }
 
@@ -667,9 +674,9 @@ const bool registered = register_command(62, [](CLI::App& root) {
                 "threads alternately (--repeat pairs) beside a busy loop that bench dpd starts on a thread of its "
                 "own, and each two-thread time against the one-thread time");
   sub->add_option("--lammps", a->lammps,
-                  "lmp_dpdrng (lammps/build.sh) to run the cells scene in LAMMPS beside dpdrng: pair_style dpd and "
-                  "pair_style dpd/hash tea32 1, in turn with dpdrng's tea32(1), --repeat rounds, 1 rank, --threads "
-                  "OpenMP threads (-sf omp); default: build/lammps/lmp_dpdrng under the working folder, else "
+                  "lmp_dpdrng (lammps/build.sh) to run each --pairs scene in LAMMPS beside dpdrng: pair_style dpd "
+                  "and pair_style dpd/hash tea32 1, in turn with dpdrng's tea32(1), --repeat rounds, 1 rank, the "
+                  "threads dpdrng's run uses (cells: --threads, with -sf omp; the 256-bead scene: one); default: build/lammps/lmp_dpdrng under the working folder, else "
                   "lmp_dpdrng on PATH, else the comparison is not applicable");
   sub->add_flag("--no-lammps", a->no_lammps, "do not run LAMMPS even when it is found");
   sub->add_flag("--json", a->json, "machine-readable output");
