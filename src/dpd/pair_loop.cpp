@@ -622,7 +622,11 @@ class PairLoop final : public PairForces {
     pair_terms<Zero>(sc.dx.data(), sc.dy.data(), sc.dz.data(), sc.r2.data(), sc.zeta.data(), sc.own.data(),
                      sc.j.data(), vxs_.data(), vys_.data(), vzs_.data(), k_.a[0], k_, 0, k, sc.gx.data(), sc.gy.data(),
                      sc.gz.data(), sc.cw.data(), sc.w.data());
-    for (int c = c0; c < c1; ++c) cell_sums<Zero>(cx, c, sc, off, bead);
+    for (int c = c0; c < c1; ++c)
+      if (cx.tap_zeta)
+        cell_sums<Zero, true>(c, sc, off, bead);
+      else
+        cell_sums<Zero, false>(c, sc, off, bead);
   }
 
   // Candidates cell c's beads visit: each its cell's beads after it and all of the forward neighbours'.
@@ -633,9 +637,10 @@ class PairLoop final : public PairForces {
 
   // Cell c's forces from the terms pair_terms left in sc (one bead type, no configurational sums): cell_forces'
   // sums over the same values in the same order, so the same bits. Pairs from `off` and own beads from `bead` on
-  // (both advanced past them).
-  template <bool Zero>
-  void cell_sums(const Ctx& cx, int c, const Scratch& sc, std::size_t& off, std::size_t& bead) {
+  // (both advanced past them). TapZeta (Ctx::tap_zeta): the ζ moments too; a run without them skips their loads
+  // and products.
+  template <bool Zero, bool TapZeta>
+  void cell_sums(int c, const Scratch& sc, std::size_t& off, std::size_t& bead) {
     const double *dxs = sc.dx.data(), *dys = sc.dy.data(), *dzs = sc.dz.data(), *r2s = sc.r2.data();
     const double *gxs = sc.gx.data(), *gys = sc.gy.data(), *gzs = sc.gz.data(), *cws = sc.cw.data();
     const double *ws = sc.w.data(), *zetas = sc.zeta.data();
@@ -647,26 +652,27 @@ class PairLoop final : public PairForces {
     for (std::uint32_t a = cells_.begin(c); a < cells_.end(c); ++a) {
       const std::size_t first = off, k = sc.counts[bead++];
       off += k;
-      if constexpr (!Zero)
-        if (cx.tap_zeta) cs.zeta.add(zetas + first, k);
+      if constexpr (!Zero && TapZeta) cs.zeta.add(zetas + first, k);
       double fx = 0, fy = 0, fz = 0;
       for (std::size_t t = first; t < off; ++t) {
         const std::uint32_t b = js[t];
         const double dx = dxs[t], dy = dys[t], dz = dzs[t], r2 = r2s[t];
-        const double zeta = Zero ? 0.0 : zetas[t];
         const double gx = gxs[t], gy = gys[t], gz = gzs[t], cw = cws[t];
         fx += gx, fy += gy, fz += gz;
         fxs[b] -= gx, fys[b] -= gy, fzs[b] -= gz;
         cs.w[0] -= gx * dx, cs.w[1] -= gy * dy, cs.w[2] -= gz * dz;
         cs.wc[0] += cw * dx * dx, cs.wc[1] += cw * dy * dy, cs.wc[2] += cw * dz * dz;
-        const double w2p = ws[t] * ws[t];
-        ww += w2p, wwzz += w2p * zeta * zeta;
+        if constexpr (TapZeta) {
+          const double zeta = Zero ? 0.0 : zetas[t];
+          const double w2p = ws[t] * ws[t];
+          ww += w2p, wwzz += w2p * zeta * zeta;
+        }
         cs.min_r2 = std::min(cs.min_r2, r2);
       }
       fxs[a] += fx, fys[a] += fy, fzs[a] += fz;
       cs.count += k;
     }
-    if (cx.tap_zeta) cs.zeta.w2 = ww, cs.zeta.w2z2 = wwzz;
+    if constexpr (TapZeta) cs.zeta.w2 = ww, cs.zeta.w2z2 = wwzz;
     cs.candidates = cell_candidates(c);
     cell_sums_[c] = cs;
   }
