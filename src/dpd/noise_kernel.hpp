@@ -118,15 +118,8 @@ class NoiseKernelOf final : public NoiseKernel {
   }
 
   // The row's pairs inside r_c moved to its front, in order, with their partners in b.j; returns their number.
-  // Branch-free: a pair is copied to the next free place whether kept or not, which is never past it.
   static std::size_t keep_in_range(const RowBatch& b) {
-    std::size_t k = 0;
-    for (std::size_t t = 0; t < b.m; ++t) {
-      b.j[k] = std::uint32_t(b.i + 1 + t);
-      b.dx[k] = b.dx[t], b.dy[k] = b.dy[t], b.dz[k] = b.dz[t], b.r2[k] = b.r2[t];
-      k += b.r2[t] < b.rc2 ? 1 : 0;
-    }
-    return k;
+    return compact_in_range(b.i + 1, b.m, b.rc2, b.dx, b.dy, b.dz, b.r2, b.j);
   }
 
   // A row without a tap: the blocks of its pairs inside r_c only (a stream's slots read where the pairs lie

@@ -232,17 +232,17 @@ class PairLoop final : public PairForces {
   template <bool Zero>
   void all_rows(const Ctx& c) {
     const std::size_t n = c.s.size(), groups = (n + kGroup - 1) / kGroup;
-    const bool batched = !Zero && !noise_->stream() && !c.tap;
+    const bool batched = !noise_->stream() && !c.tap;
     if (batched) round_positions(c.s);
 #pragma omp parallel for num_threads(threads_) schedule(dynamic, 1)
     for (std::size_t g = 0; g < groups; ++g) {
       const auto i0 = static_cast<std::uint32_t>(g * kGroup);
       const auto i1 = static_cast<std::uint32_t>(std::min(n, (g + 1) * kGroup));
       if (batched) {
-        row_group(c, i0, i1, omp_get_thread_num());
+        row_group<Zero>(c, i0, i1, omp_get_thread_num());
         continue;
       }
-      for (std::uint32_t i = i0; i < i1; ++i) row_all<Zero>(c, i, omp_get_thread_num());
+      for (std::uint32_t i = i0; i < i1; ++i) row_all(c, i, omp_get_thread_num());
     }
   }
 
@@ -268,6 +268,8 @@ class PairLoop final : public PairForces {
   // Rows [i0, i1) under a hash: each row's pairs inside r_c collected one row after another, their ζ in one
   // batch (a row holds ~6 such pairs in the paper's fluid: too few for the vectorised hash and Box–Muller),
   // then each row's forces. A hash's block is a function of the pair alone, so the grouping changes no number.
+  // Zero (the ζ = 0 baseline): the same path without the noise, so that the two differ by the noise alone.
+  template <bool Zero>
   void row_group(const Ctx& c, std::uint32_t i0, std::uint32_t i1, int thread) {
     Scratch& sc = scratch_[std::size_t(thread)];
     const System& s = c.s;
@@ -287,51 +289,59 @@ class PairLoop final : public PairForces {
       sc.counts.push_back(std::uint32_t(k));
       off += k;
     }
-    const PairBatch b{sc.pi.data(), sc.j.data(), off, sc.dx.data(), sc.dy.data(), sc.dz.data(), c.step, 0,
-                      {nullptr, nullptr}, sc.zeta.data(), c.in_tap ? used_room(sc, off) : nullptr};
-    noise_->pairs(b, thread);
+    if constexpr (!Zero) {
+      const PairBatch b{sc.pi.data(), sc.j.data(), off, sc.dx.data(), sc.dy.data(), sc.dz.data(), c.step, 0,
+                        {nullptr, nullptr}, sc.zeta.data(), c.in_tap ? used_room(sc, off) : nullptr};
+      noise_->pairs(b, thread);
+    }
     // One bead type and no configurational sums: the group's pair terms in one vectorised pass, then each
     // row's sums over them (row_sums), as in cells mode.
     const bool terms = !c.conf && k_.ntypes == 1;
     if (terms)
-      pair_terms<false>(sc.dx.data(), sc.dy.data(), sc.dz.data(), sc.r2.data(), sc.zeta.data(), sc.pi.data(),
+      pair_terms<Zero>(sc.dx.data(), sc.dy.data(), sc.dz.data(), sc.r2.data(), sc.zeta.data(), sc.pi.data(),
                         sc.j.data(), c.v.vx, c.v.vy, c.v.vz, k_.a[0], k_, 0, off, sc.gx.data(), sc.gy.data(),
                         sc.gz.data(), sc.cw.data(), sc.w.data());
     off = 0;
     for (std::uint32_t i = i0; i < i1; ++i) {
       const std::size_t k = sc.counts[i - i0];
       if (c.in_tap) record_row(i, k, sc, off);
-      if (terms)
-        row_sums(c, i, k, sc, off, rows_[i]);
+      if (terms && c.tap_zeta)
+        row_sums<true>(c, i, k, sc, off, rows_[i]);
+      else if (terms)
+        row_sums<false>(c, i, k, sc, off, rows_[i]);
       else
-        forces<false>(c, i, k, sc, off, rows_[i]);
+        forces<Zero>(c, i, k, sc, off, rows_[i]);
       off += k;
     }
   }
 
   // Row i's forces from the terms pair_terms left in sc for its m pairs from `off` on (one bead type, no
   // configurational sums): forces<false, false>'s sums over the same values in the same order, so the same bits.
+  // TapZeta (Ctx::tap_zeta, never with the ζ = 0 baseline): the ζ moments too.
+  template <bool TapZeta>
   void row_sums(const Ctx& c, std::uint32_t i, std::size_t m, const Scratch& sc, std::size_t off, Row& row) {
     double fx = 0, fy = 0, fz = 0, w0 = 0, w1 = 0, w2 = 0, c0 = 0, c1 = 0, c2 = 0, ww = 0, wwzz = 0;
     double min_r2 = k_.rc2();
     if (row.rec.size() < m) row.rec.resize(m);
     row.zeta = ZetaSums{};
-    if (c.tap_zeta) row.zeta.add(sc.zeta.data() + off, m);
+    if constexpr (TapZeta) row.zeta.add(sc.zeta.data() + off, m);
     for (std::size_t p = off; p < off + m; ++p) {
-      const double dx = sc.dx[p], dy = sc.dy[p], dz = sc.dz[p], r2 = sc.r2[p], zeta = sc.zeta[p];
+      const double dx = sc.dx[p], dy = sc.dy[p], dz = sc.dz[p], r2 = sc.r2[p];
       const double gx = sc.gx[p], gy = sc.gy[p], gz = sc.gz[p], cw = sc.cw[p];
       fx += gx, fy += gy, fz += gz;
       w0 -= gx * dx, w1 -= gy * dy, w2 -= gz * dz;
       c0 += cw * dx * dx, c1 += cw * dy * dy, c2 += cw * dz * dz;
       row.rec[p - off] = {sc.j[p], gx, gy, gz};
-      const double w2p = sc.w[p] * sc.w[p];
-      ww += w2p, wwzz += w2p * zeta * zeta;
+      if constexpr (TapZeta) {
+        const double w2p = sc.w[p] * sc.w[p], zeta = sc.zeta[p];
+        ww += w2p, wwzz += w2p * zeta * zeta;
+      }
       min_r2 = std::min(min_r2, r2);
     }
     c.s.fx[i] = fx, c.s.fy[i] = fy, c.s.fz[i] = fz;
     fcx_[i] = 0, fcy_[i] = 0, fcz_[i] = 0;
     row.laplacian = 0;
-    if (c.tap_zeta) row.zeta.w2 = ww, row.zeta.w2z2 = wwzz;
+    if constexpr (TapZeta) row.zeta.w2 = ww, row.zeta.w2z2 = wwzz;
     row.count = static_cast<std::uint32_t>(m);
     row.w[0] = w0, row.w[1] = w1, row.w[2] = w2;
     row.wc[0] = c0, row.wc[1] = c1, row.wc[2] = c2;
@@ -396,7 +406,8 @@ class PairLoop final : public PairForces {
     row.min_r2 = min_r2;
   }
 
-  template <bool Zero>
+  // Row i under a stream or on a tapped step (never the ζ = 0 baseline, which has neither): every pair's
+  // geometry, then the noise kernel keeps those inside r_c (NoiseKernel::row).
   void row_all(const Ctx& c, std::uint32_t i, int thread) {
     Scratch& sc = scratch_[std::size_t(thread)];
     const System& s = c.s;
@@ -408,18 +419,13 @@ class PairLoop final : public PairForces {
     double* dys = sc.dy.data();
     double* dzs = sc.dz.data();
     double* r2s = sc.r2.data();
-    const double rc2 = k_.rc2();
-    if constexpr (!Zero) {
-      RowBatch b{i, m, dxs, dys, dzs, r2s, sc.j.data(), rc2, c.step, base, {nullptr, nullptr}, sc.zeta.data(),
-                 c.in_tap ? used_room(sc, m) : nullptr};
-      if (c.tap)
-        for (int w = 0; w < words_; ++w) b.tap[w] = c.tap->words[w].data() + base;
-      const std::size_t k = noise_->row(b, thread);
-      if (c.in_tap) record_row(i, k, sc, 0);
-      forces<Zero>(c, i, k, sc, 0, rows_[i]);
-      return;
-    }
-    forces<Zero>(c, i, compact_in_range(i + 1, m, rc2, dxs, dys, dzs, r2s, sc.j.data()), sc, 0, rows_[i]);
+    RowBatch b{i, m, dxs, dys, dzs, r2s, sc.j.data(), k_.rc2(), c.step, base, {nullptr, nullptr}, sc.zeta.data(),
+               c.in_tap ? used_room(sc, m) : nullptr};
+    if (c.tap)
+      for (int w = 0; w < words_; ++w) b.tap[w] = c.tap->words[w].data() + base;
+    const std::size_t k = noise_->row(b, thread);
+    if (c.in_tap) record_row(i, k, sc, 0);
+    forces<false>(c, i, k, sc, 0, rows_[i]);
   }
 
   // Room for the used words of k pairs in sc.

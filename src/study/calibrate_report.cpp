@@ -561,17 +561,20 @@ std::string at_size_clause(const nlohmann::json& j, int replicas, const fs::path
   return "";
 }
 
-std::vector<fs::path> calibration_files(const std::vector<fs::path>& places) {
-  std::vector<fs::path> files;
-  for (const auto& place : places)
-    for (auto& f : calibration_files(place)) files.push_back(std::move(f));
-  return files;
-}
-
 }  // namespace
 
-std::string detection_limit_sentence(const StudyConfig& config, const std::vector<fs::path>& places) {
-  const std::vector<fs::path> files = calibration_files(places);
+std::vector<CalibrationRecord> read_calibrations(const std::vector<fs::path>& places) {
+  std::vector<CalibrationRecord> out;
+  for (const auto& place : places)
+    for (auto& file : calibration_files(place)) {
+      std::ifstream in(file);
+      nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+      if (!j.is_discarded()) out.push_back({std::move(file), std::move(j)});
+    }
+  return out;
+}
+
+std::string detection_limit_sentence(const StudyConfig& config, const std::vector<CalibrationRecord>& records) {
   const std::string none = "Detection limit: not calibrated for this config (no `dpdrng study calibrate` result "
                            "with its scene, run length, tests and replica count).";
   if (config.scene.is_bilayer())
@@ -579,10 +582,8 @@ std::string detection_limit_sentence(const StudyConfig& config, const std::vecto
            "cell costs minutes, a calibration thousands of cells).";
   const nlohmann::json key = calibration_key(config);
   std::string limit, other_length, at_size;
-  for (const auto& file : files) {
+  for (const auto& [file, j] : records) {
     try {
-      std::ifstream in(file);
-      const nlohmann::json j = nlohmann::json::parse(in);
       if (at_size.empty() && j.at("key") == key) at_size = at_size_clause(j, config.replicas, file);
       const std::string clause = limit_clause(j, config.replicas);
       if (clause.empty()) continue;
@@ -610,16 +611,15 @@ std::string detection_limit_sentence(const StudyConfig& config, const std::vecto
   return none;
 }
 
-std::string detection_limit_sentence(const StudyConfig& config, const fs::path& dir) {
-  return detection_limit_sentence(config, std::vector<fs::path>{dir});
+std::string detection_limit_sentence(const StudyConfig& config, const fs::path& place) {
+  return detection_limit_sentence(config, read_calibrations({place}));
 }
 
-std::map<std::string, Rate> calibrated_equivalence(const StudyConfig& config, const std::vector<fs::path>& places) {
+std::map<std::string, Rate> calibrated_equivalence(const StudyConfig& config,
+                                                   const std::vector<CalibrationRecord>& records) {
   const nlohmann::json key = calibration_key(config);
-  for (const auto& file : calibration_files(places)) {
+  for (const auto& [file, j] : records) {
     try {
-      std::ifstream in(file);
-      const nlohmann::json j = nlohmann::json::parse(in);
       if (!j.value("at_size", false) || j.at("key") != key) continue;
       std::map<std::string, Rate> out;
       for (const auto& e : j.at("equivalence"))

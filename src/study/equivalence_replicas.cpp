@@ -53,8 +53,8 @@ std::vector<EquivalenceReplicas> equivalence_replicas(const Analysis& a, double 
     r.threshold = threshold;
     r.comparisons = s.sd.size();
     if (s.curve || s.sd.empty()) {
-      r.note = s.curve ? "not modelled: a curve is equivalent when every kept bin's interval lies inside the margin"
-                       : "not modelled: no comparison with a replica spread";
+      r.not_modelled = s.curve ? "a curve is equivalent when every kept bin's interval lies inside the margin"
+                               : "no comparison with a replica spread";
       out.push_back(r);
       continue;
     }
@@ -66,7 +66,7 @@ std::vector<EquivalenceReplicas> equivalence_replicas(const Analysis& a, double 
     r.power_now = stats::equivalence_power(se, r.dof, threshold, r.margin);
     r.needed = stats::replicas_for_equivalence(r.sd, double(r.reference_replicas) / r.replicas, r.dof, threshold,
                                                r.margin, power);
-    if (r.needed < 0) r.note = "not modelled: the spread or the equivalence family is empty";
+    if (r.needed < 0) r.not_modelled = "the spread or the equivalence family is empty";
     out.push_back(r);
   }
   return out;

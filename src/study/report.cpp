@@ -148,8 +148,8 @@ std::string report_header(const StudyConfig& config, const Analysis& a, const st
   return md.str();
 }
 
-std::vector<fs::path> calibration_places(const fs::path& study_dir, const ReportOptions& options) {
-  if (!options.calibration.empty()) return {options.calibration};
+std::vector<CalibrationRecord> calibrations(const fs::path& study_dir, const ReportOptions& options) {
+  if (!options.calibration.empty()) return read_calibrations({options.calibration});
   fs::path study = fs::absolute(study_dir).lexically_normal();
   if (!study.has_filename()) study = study.parent_path();  // "results/ci/" names the same directory
   const fs::path results = study.parent_path();
@@ -161,11 +161,7 @@ std::vector<fs::path> calibration_places(const fs::path& study_dir, const Report
       places.push_back(e.path() / "calibration.json");
   std::sort(places.begin(), places.end());
   places.insert(places.begin(), results / "calibration");
-  return places;
-}
-
-std::string detection_limit(const StudyConfig& config, const fs::path& study_dir, const ReportOptions& options) {
-  return detection_limit_sentence(config, calibration_places(study_dir, options));
+  return read_calibrations(places);
 }
 
 std::string unreadable_cells_markdown(const std::vector<std::string>& files) {
@@ -253,8 +249,8 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
   const std::vector<RoundsRow> rounds = rounds_figures(a);
   write(dir / "rounds_figures.csv", rounds_figures_csv(rounds));
   const std::vector<EquivalenceReplicas> replicas_for = equivalence_replicas(a);
-  const std::map<std::string, Rate> calibrated =
-      calibrated_equivalence(config, detail::calibration_places(study_dir, options));
+  const std::vector<CalibrationRecord> calibrations = detail::calibrations(study_dir, options);
+  const std::map<std::string, Rate> calibrated = calibrated_equivalence(config, calibrations);
   write(dir / "equivalence_replicas.csv", equivalence_replicas_csv(replicas_for, calibrated));
   std::vector<std::string> made;
   if (options.charts) {
@@ -265,7 +261,7 @@ fs::path write_report(const StudyConfig& config, const std::vector<CellResult>& 
   const auto have = [&](const std::string& n) { return std::find(made.begin(), made.end(), n) != made.end(); };
 
   std::ostringstream md;
-  md << detail::report_header(config, a, cells, detail::detection_limit(config, study_dir, options))
+  md << detail::report_header(config, a, cells, detection_limit_sentence(config, calibrations))
      << detail::unreadable_cells_markdown(options.unreadable);
 
   md << "## Verdicts\n\n"

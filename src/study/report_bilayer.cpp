@@ -129,7 +129,8 @@ fs::path write_bilayer_report(const StudyConfig& config, const std::vector<CellR
   const auto have = [&](const std::string& n) { return std::find(made.begin(), made.end(), n) != made.end(); };
 
   std::ostringstream md;
-  md << detail::report_header(config, a, cells, detail::detection_limit(config, study_dir, options))
+  const std::string limit = detection_limit_sentence(config, detail::calibrations(study_dir, options));
+  md << detail::report_header(config, a, cells, limit)
      << detail::unreadable_cells_markdown(options.unreadable);
   md << "## Verdicts\n\n"
      << "Each generator is compared with MT19937 run with identical settings from the same initial states (one per "

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "dpdrng/study/analysis.hpp"
+#include "dpdrng/study/calibrate.hpp"
 #include "dpdrng/study/cell_result.hpp"
 #include "dpdrng/study/config.hpp"
 #include "dpdrng/study/report.hpp"
@@ -29,13 +30,9 @@ std::string chart_link(const std::string& name, const std::string& alt);    // P
 // Title, description, cells stored and broken, scene, replicas, error control, detection limit and config hash.
 std::string report_header(const StudyConfig& config, const Analysis& a, const std::vector<CellResult>& cells,
                           const std::string& detection_limit);
-// Where a study's calibrations are read from: options.calibration when given; else <study dir>/../calibration
-// and the calibration.json of every other sibling directory (a calibration at the study's own size).
-std::vector<std::filesystem::path> calibration_places(const std::filesystem::path& study_dir,
-                                                      const ReportOptions& options);
-// The detection-limit sentence from those places.
-std::string detection_limit(const StudyConfig& config, const std::filesystem::path& study_dir,
-                            const ReportOptions& options);
+// A study's calibrations, each read once: options.calibration when given; else <study dir>/../calibration and
+// the calibration.json of every other sibling directory (a calibration at the study's own size).
+std::vector<CalibrationRecord> calibrations(const std::filesystem::path& study_dir, const ReportOptions& options);
 // The "Unstable and failed cells" section, with every cell's notes.
 std::string broken_cells_markdown(const std::vector<CellResult>& cells);
 // The cell files that exist but could not be read (empty when there are none).

@@ -172,7 +172,7 @@ std::string calibrated_text(const std::map<std::string, Rate>& calibrated, const
 std::string needed_text(const EquivalenceReplicas& r) {
   if (r.needed > 0) return std::to_string(r.needed) + " (reference " +
                            std::to_string(int(std::ceil(double(r.needed) * r.reference_replicas / r.replicas))) + ")";
-  return r.needed == 0 ? "more than 100 000" : "not applicable: " + r.note.substr(r.note.find(':') + 2);
+  return r.needed == 0 ? "more than 100 000" : "not applicable: " + r.not_modelled;
 }
 
 }  // namespace
@@ -190,7 +190,8 @@ std::string equivalence_replicas_csv(const std::vector<EquivalenceReplicas>& row
       << (r.reference_replicas ? std::to_string(r.reference_replicas) : "") << "," << num(r.threshold) << ","
       << num(r.power_now) << "," << (r.needed >= 0 ? std::to_string(r.needed) : "") << ","
       << (cal ? num(it->second.rate) : "") << "," << (cal ? std::to_string(it->second.trials) : "") << ","
-      << (cal ? num(it->second.low) : "") << "," << (cal ? num(it->second.high) : "") << "," << r.note << "\n";
+      << (cal ? num(it->second.low) : "") << "," << (cal ? num(it->second.high) : "") << ","
+      << (r.not_modelled.empty() ? "" : detail::csv_quote("not modelled: " + r.not_modelled)) << "\n";
   }
   return o.str();
 }

@@ -2,17 +2,18 @@
 // The pair loop, compiled once (pair_loop.cpp), around a per-noise kernel (noise_kernel.hpp) that it calls once
 // per batch of pairs: a group of rows (all mode) or a layer of cells (cells mode), never per pair.
 //   all:   row i does its partners j > i. Under a hash, sixteen rows collect their pairs inside r_c
-//          (pair_filter::append_sparse: ~1 candidate in 20 is kept, so 64 candidates become a mask in SIMD
-//          registers and only the kept pairs' separations are written), draw the noise of all of them in one
+//          (pair_filter::append_rounded: ~1 candidate in 20 is kept, so a single-precision test, 16 lanes,
+//          passes a superset, which is gathered and tested exactly), draw the noise of all of them in one
 //          batch (a hash's block depends on the pair alone, so the pairs outside r_c need none), compute the
 //          group's pair terms in one vectorised pass, then sum each row's forces in pair order. A stream, which
-//          owns a number per pair slot, and a tapped step, which records every pair's words, draw every pair
-//          of a row (NoiseKernel::row): geometry for all, then the pairs inside r_c kept (compact_in_range).
-//          Reactions are added serially.
+//          owns a number per pair slot, and a tapped step, which records every pair's words, compute every
+//          pair's geometry (NoiseKernel::row); the stream then reads the slots of the pairs inside r_c only,
+//          the tap every pair's words. Reactions are added serially.
 //   cells: the beads are sorted by cell every step (neighbours.hpp) and copied into sorted arrays, both
 //          shared by the team (every sorted slot written once, so any team gives the same arrays); each cell
-//          does its own pairs and those with its 13 forward neighbours, writing both forces at once; the
-//          filter reads the candidates straight from the sorted arrays, in runs of consecutive cells. A layer
+//          does its own pairs and those with its 13 forward neighbours, writing both forces at once; a cell's
+//          candidates are copied from the sorted arrays (runs of consecutive cells) into one list that each of
+//          its beads filters in whole vectors, without min_image where the cell's stencil cannot wrap. A layer
 //          of cells collects its pairs inside r_c first and draws their noise in one batch (long enough for
 //          the vectorised hash and Box–Muller), then does the cells' forces in the same order as ever; even
 //          z-layers of cells run in parallel (disjoint writes), and each odd one once its two even

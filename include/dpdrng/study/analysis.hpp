@@ -233,8 +233,8 @@ struct EquivalenceReplicas {
   int replicas = 0, reference_replicas = 0;  // the study's (medians over the comparisons)
   double threshold = NAN;        // α/m
   double power_now = NAN;        // the predicted chance at the study's replicas
-  int needed = -1;               // replicas for `power`; 0: more than 100 000; −1: not modelled (see note)
-  std::string note;              // why the row is not modelled, "" when it is
+  int needed = -1;               // replicas for `power`; 0: more than 100 000; −1: not modelled (see not_modelled)
+  std::string not_modelled;      // why the row is not modelled, "" when it is
 };
 std::vector<EquivalenceReplicas> equivalence_replicas(const Analysis& a, double power = 0.9);
 

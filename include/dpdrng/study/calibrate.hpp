@@ -155,15 +155,24 @@ Calibration read_calibration_tables(const std::filesystem::path& dir);
 // Writes the chart CSVs and scripts of the calibration in dir (its charts/), drawn from its tables.
 void write_calibration_charts(const Calibration& c, const std::filesystem::path& dir, bool run, std::ostream* log);
 
-// The report's detection-limit sentence for `config`, from the calibration.json files in `places` (each a
-// calibration.json, or a directory searched for them): the one whose key matches the config and that has a row
-// for its replica count; "not calibrated for this config" otherwise. A calibration of null studies at the
-// config's own size (`--at-size`) puts its false-alarm rate in front.
-std::string detection_limit_sentence(const StudyConfig& config, const std::vector<std::filesystem::path>& places);
+// A calibration.json as a report reads it: where it is (the report names it) and what it holds.
+struct CalibrationRecord {
+  std::filesystem::path file;
+  nlohmann::json json;
+};
+// The calibration.json files in `places` (each a calibration.json, or a directory searched for them), in order,
+// each parsed once; a file that is not JSON is left out.
+std::vector<CalibrationRecord> read_calibrations(const std::vector<std::filesystem::path>& places);
+
+// The report's detection-limit sentence for `config`, from `records`: the one whose key matches the config and
+// that has a row for its replica count; "not calibrated for this config" otherwise. A calibration of null
+// studies at the config's own size (`--at-size`) puts its false-alarm rate in front. Records of another layout
+// are passed over.
+std::string detection_limit_sentence(const StudyConfig& config, const std::vector<CalibrationRecord>& records);
 std::string detection_limit_sentence(const StudyConfig& config, const std::filesystem::path& place);
-// From the calibration at the config's own size among `places` (the first whose key matches): per observable,
+// From the calibration at the config's own size among `records` (the first whose key matches): per observable,
 // how often a good generator's variant came out `equivalent` at the config's replica count. Empty when none.
 std::map<std::string, Rate> calibrated_equivalence(const StudyConfig& config,
-                                                   const std::vector<std::filesystem::path>& places);
+                                                   const std::vector<CalibrationRecord>& records);
 
 }  // namespace dpdrng::study
