@@ -59,6 +59,16 @@ void expect_same(const Pairs& a, std::size_t ka, const Pairs& b, std::size_t kb,
   }
 }
 
+// n beads uniform in `box`, positions readable `pad` entries past the last (zeros).
+struct Beads {
+  std::vector<double> x, y, z;
+  Beads(const Box& box, std::size_t n, std::size_t pad, std::uint64_t seed) : x(n + pad), y(n + pad), z(n + pad) {
+    std::mt19937_64 g(seed);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (std::size_t k = 0; k < n; ++k) x[k] = box.L[0] * u(g), y[k] = box.L[1] * u(g), z[k] = box.L[2] * u(g);
+  }
+};
+
 }  // namespace
 
 TEST(PairFilter, MatchesTheScalarLoopForEveryRange) {
@@ -66,11 +76,9 @@ TEST(PairFilter, MatchesTheScalarLoopForEveryRange) {
   // shifts by +L and −L along every axis.
   Box box;
   box.L = {4.0, 5.0, 6.0};
-  std::mt19937_64 g(2024);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
   const std::size_t n = 600;
-  std::vector<double> x(n), y(n), z(n);
-  for (std::size_t k = 0; k < n; ++k) x[k] = 4.0 * u(g), y[k] = 5.0 * u(g), z[k] = 6.0 * u(g);
+  Beads beads(box, n, 0, 2024);
+  std::vector<double>& x = beads.x, &y = beads.y, &z = beads.z;
   x[7] = std::numeric_limits<double>::quiet_NaN();  // r² NaN: never kept
   x[8] = x[0], y[8] = y[0], z[8] = z[0];              // r = 0 from bead 0: kept
   x[9] = x[0] + 1.2, y[9] = y[0], z[9] = z[0];        // r² at r_c², up to rounding: as the scalar loop decides
@@ -94,11 +102,11 @@ TEST(PairFilter, MatchesTheScalarLoopForEveryRange) {
 TEST(PairFilter, ListedCandidatesMatchTheScalarLoop) {
   Box box;
   box.L = {4.0, 5.0, 6.0};
-  std::mt19937_64 g(7);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
   const std::size_t n = 300;
-  std::vector<double> x(n + pf::kSlack), y(n + pf::kSlack), z(n + pf::kSlack);
-  for (std::size_t k = 0; k < n; ++k) x[k] = 4.0 * u(g), y[k] = 5.0 * u(g), z[k] = 6.0 * u(g);
+  Beads beads(box, n, pf::kSlack, 7);
+  std::vector<double>& x = beads.x, &y = beads.y, &z = beads.z;
+  std::mt19937_64 g(8);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
   x[40] = std::numeric_limits<double>::quiet_NaN();
   // Ranges of every length around the vector width, one of them empty.
   const std::uint32_t ranges[][2] = {{30, 47}, {100, 100}, {150, 159}, {200, 201}, {250, 266}};
@@ -148,8 +156,8 @@ TEST(PairFilter, RoundedPrefilterKeepsExactlyTheExactFiltersPairs) {
     Box box;
     box.L = {L, L * 1.1, L * 0.9};
     const std::size_t n = 700;
-    std::vector<double> x(n), y(n), z(n);
-    for (std::size_t k = 0; k < n; ++k) x[k] = box.L[0] * u(g), y[k] = box.L[1] * u(g), z[k] = box.L[2] * u(g);
+    Beads beads(box, n, 0, 99 + std::uint64_t(L));
+    std::vector<double>& x = beads.x, &y = beads.y, &z = beads.z;
     // Beads 1 … 400 around bead 0 (and across the box's faces) at r = r_c (1 ± 1e-9 … 1 ± 1e-6).
     for (std::size_t k = 1; k <= 400; ++k) {
       const double c = 2 * u(g) - 1, phi = 6.283185307179586 * u(g), sn = std::sqrt(1 - c * c);
