@@ -110,22 +110,17 @@ class NoiseKernelOf final : public NoiseKernel {
   // A batched generator is called once per batch and only for the pairs inside r_c (the other kernels hash every
   // candidate, in SIMD lanes): the same blocks for the pairs whose ζ is used.
   std::size_t row_batched(const RowBatch& b, Scratch& sc) {
-    const std::size_t k = keep_in_range(b);
+    const std::size_t k = compact_in_range(b.i + 1, b.m, b.rc2, b.dx, b.dy, b.dz, b.r2, b.j);
     sc.i.assign(k, b.i);
     batch_zetas(sc, sc.i.data(), b.j, b.dx, b.dy, b.dz, b.step, k, b.zeta);
     if (b.used) copy_used(sc.blk.data(), sc.blk2.data(), k, b.used);
     return k;
   }
 
-  // The row's pairs inside r_c moved to its front, in order, with their partners in b.j; returns their number.
-  static std::size_t keep_in_range(const RowBatch& b) {
-    return compact_in_range(b.i + 1, b.m, b.rc2, b.dx, b.dy, b.dz, b.r2, b.j);
-  }
-
   // A row without a tap: the blocks of its pairs inside r_c only (a stream's slots read where the pairs lie
   // in the row), the same blocks the tapped path keeps.
   std::size_t row_kept(const RowBatch& b, Scratch& sc) {
-    const std::size_t k = keep_in_range(b);
+    const std::size_t k = compact_in_range(b.i + 1, b.m, b.rc2, b.dx, b.dy, b.dz, b.r2, b.j);
     Block* blk = sc.blk.data();
     const bool two = noise_.feed() == rng::Feed::blocks;
     for (std::size_t q = 0; q < k; ++q) {
