@@ -39,16 +39,13 @@ class NoiseKernelOf final : public NoiseKernel {
     Block* blk = sc.blk.data();
     double *dxs = b.dx, *dys = b.dy, *dzs = b.dz, *r2s = b.r2;
     const std::uint32_t i = b.i;
-    for (std::size_t t = 0; t < m; ++t)
-      blk[t] = noise_.raw(rng::PairInput{i, std::uint32_t(i + 1 + t), dxs[t], dys[t], dzs[t], b.step}, b.slot + t);
-    if (b.tap[0])
-      for (int w = 0; w < Noise::kWords; ++w)
-        for (std::size_t t = 0; t < m; ++t) b.tap[w][t] = blk[t][w];
+    row_blocks(b, sc, blk, false);
+    for (int w = 0; w < Noise::kWords; ++w)
+      for (std::size_t t = 0; t < m; ++t) b.tap[w][t] = blk[t][w];
     // Keep the blocks of the pairs inside r_c, in order; second blocks first, while r2s covers every pair.
     if (noise_.feed() == rng::Feed::blocks) {
       Block* blk2 = sc.blk2.data();
-      for (std::size_t t = 0; t < m; ++t)
-        blk2[t] = noise_.raw2(rng::PairInput{i, std::uint32_t(i + 1 + t), dxs[t], dys[t], dzs[t], b.step}, b.slot + t);
+      row_blocks(b, sc, blk2, true);
       std::size_t k2 = 0;
       for (std::size_t t = 0; t < m; ++t)
         if (r2s[t] < b.rc2) blk2[k2++] = blk2[t];
@@ -106,6 +103,22 @@ class NoiseKernelOf final : public NoiseKernel {
     std::vector<std::uint32_t> i, j;  // a batched generator's canonical pairs
     std::vector<double> dx, dy, dz;
   };
+
+  // The blocks of every candidate of row b (pairs (i, i + 1 + t)), or their second blocks: a batched generator's
+  // in one call.
+  void row_blocks(const RowBatch& b, Scratch& sc, Block* out, bool second) const {
+    const std::uint32_t i = b.i;
+    if constexpr (kBatched) {
+      sc.i.assign(b.m, i), sc.j.resize(b.m);
+      for (std::size_t t = 0; t < b.m; ++t) sc.j[t] = std::uint32_t(i + 1 + t);
+      noise_.raw_batch(sc.i.data(), sc.j.data(), b.dx, b.dy, b.dz, b.step, b.m, out, second);
+    } else {
+      for (std::size_t t = 0; t < b.m; ++t) {
+        const rng::PairInput p{i, std::uint32_t(i + 1 + t), b.dx[t], b.dy[t], b.dz[t], b.step};
+        out[t] = second ? noise_.raw2(p, b.slot + t) : noise_.raw(p, b.slot + t);
+      }
+    }
+  }
 
   // A batched generator is called once per batch and only for the pairs inside r_c (the other kernels hash every
   // candidate, in SIMD lanes): the same blocks for the pairs whose ζ is used.

@@ -91,6 +91,20 @@ void box_muller_words(const std::uint64_t* w, std::size_t n, double* o) {
   for (; c < n; ++c) o[c] = box_muller(std::array<std::uint64_t, 1>{w[c]});
 }
 
+void box_muller_two_words(const std::uint64_t* u1, const std::uint64_t* u2, std::size_t n, double* o) {
+  std::size_t c = 0;
+  for (; c + 8 <= n; c += 8) {
+    alignas(64) double radius2[8], cosine[8];
+    for (std::size_t j = 0; j < 8; ++j) {
+      const BoxMullerParts p = box_muller_parts(std::array<std::uint64_t, 2>{u1[c + j], u2[c + j]});
+      radius2[j] = p.radius2;
+      cosine[j] = p.cosine;
+    }
+    simd::store(o + c, simd::sqrt(simd::load<simd::f64x8>(radius2)) * simd::load<simd::f64x8>(cosine));
+  }
+  for (; c < n; ++c) o[c] = box_muller(std::array<std::uint64_t, 2>{u1[c], u2[c]});
+}
+
 namespace {
 
 template <int W>

@@ -1,6 +1,7 @@
 // The batched paths against the scalar definitions, all bit for bit: integer outputs, uniform and Gaussian numbers.
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -74,6 +75,46 @@ TEST(Batch, Tea32HashBatchEqualsScalar) {
   check(dyn);
 }
 
+// The pair loop's batch members of the built-in TEAs against distance() and pair_step() pair by pair: every
+// compiled round count and a run-time one, a key other than the paper's, separations of both signs with
+// subnormal and zero components, ids across the whole 32-bit range, steps past 2^32, batch lengths with tails.
+template <class G>
+void expect_pair_batches_equal_scalar(G g) {
+  g.key = {0x9e3779b9u, 7u, 0xdeadbeefu, 0x12345678u};
+  std::mt19937_64 pick(23);
+  std::uniform_real_distribution<double> sep(-1.0, 1.0);
+  for (std::size_t n : {std::size_t{133}, std::size_t{16}, std::size_t{7}, std::size_t{0}}) {
+    std::vector<double> dx(n), dy(n), dz(n);
+    std::vector<std::uint32_t> i(n), j(n);
+    for (std::size_t t = 0; t < n; ++t) {
+      dx[t] = sep(pick), dy[t] = sep(pick), dz[t] = sep(pick);
+      i[t] = static_cast<std::uint32_t>(pick()), j[t] = static_cast<std::uint32_t>(pick());
+    }
+    if (n > 3) dx[0] = 0.0, dy[1] = -0.0, dx[2] = 4.9e-324, dy[3] = -2.2e-308;
+    std::vector<typename G::Block> got(n);
+    g.distance_batch(dx.data(), dy.data(), dz.data(), n, got.data());
+    for (std::size_t t = 0; t < n; ++t) ASSERT_EQ(got[t], g.distance(dx[t], dy[t], dz[t])) << G::kName << " " << t;
+    for (const std::uint64_t step : {std::uint64_t{0}, std::uint64_t{123456789012}, ~std::uint64_t{5}}) {
+      g.pair_step_batch(i.data(), j.data(), step, 0xabcdef0123ull, n, got.data());
+      for (std::size_t t = 0; t < n; ++t)
+        ASSERT_EQ(got[t], g.pair_step(i[t], j[t], step, 0xabcdef0123ull)) << G::kName << " " << t;
+    }
+  }
+}
+
+template <template <int> class G, int... R>
+void expect_pair_batches_at(Rounds<R...>) {
+  (expect_pair_batches_equal_scalar(G<R>{}), ...);
+  G<0> dyn;
+  dyn.rounds = 11;
+  expect_pair_batches_equal_scalar(dyn);
+}
+
+TEST(Batch, TeaPairBatchesEqualScalar) {
+  expect_pair_batches_at<Tea32>(TeaCompiledRounds{});
+  expect_pair_batches_at<Tea64>(TeaCompiledRounds{});
+}
+
 std::vector<double> scalar_noise(const GeneratorSpec& s, Distribution d, std::uint64_t start, std::uint64_t first,
                                  std::size_t n) {
   std::vector<double> out(n);
@@ -111,6 +152,26 @@ TEST(Batch, FillGaussEqualsScalarBoxMullerBitwise) {
       std::vector<double> got(len);
       fill_gauss(s, 3, 7, got);
       for (std::size_t k = 0; k < got.size(); ++k) ASSERT_EQ(got[k], ref[k]) << describe(s) << " k " << k;
+    }
+  }
+}
+
+// The pair loop's two-word Box–Muller (the blocks feed, and the halves of two-word blocks) eight at a time
+// against the scalar box_muller, bit for bit: random words, the words at the ends of the unit interval (u1 = 2^-53
+// and 1, u2 = 0 and just below 1), and lengths that leave a tail shorter than a register.
+TEST(Batch, TwoWordBoxMullerEqualsScalarBitwise) {
+  std::mt19937_64 eng(35);
+  for (std::size_t len : {1001, 8, 7, 0}) {
+    std::vector<std::uint64_t> u1(len), u2(len);
+    for (std::size_t k = 0; k < len; ++k) u1[k] = eng(), u2[k] = eng();
+    const std::uint64_t edges[] = {0, ~0ull, 1ull << 11, (1ull << 11) - 1};
+    for (std::size_t k = 0; k < len && k < 16; ++k) u1[k] = edges[k % 4], u2[k] = edges[(k / 4) % 4];
+    std::vector<double> got(len);
+    box_muller_two_words(u1.data(), u2.data(), len, got.data());
+    for (std::size_t k = 0; k < len; ++k) {
+      const double ref = box_muller(std::array<std::uint64_t, 2>{u1[k], u2[k]});
+      ASSERT_EQ(std::bit_cast<std::uint64_t>(got[k]), std::bit_cast<std::uint64_t>(ref)) << "len " << len << " k " << k;
+      ASSERT_TRUE(std::isfinite(got[k]));
     }
   }
 }

@@ -18,6 +18,19 @@
 
 namespace dpdrng::dpd {
 
+// z[t] = Box–Muller of the words u1(t) and u2(t) for t < m (rng::box_muller_two_words, eight at a time: a loop of
+// box_muller calls stays scalar, as std::sqrt may set errno), through buffers of plain words.
+template <class U1, class U2>
+inline void two_word_zetas(std::size_t m, double* z, U1 u1, U2 u2) {
+  constexpr std::size_t kChunk = 128;
+  std::uint64_t w1[kChunk], w2[kChunk];
+  for (std::size_t c = 0; c < m; c += kChunk) {
+    const std::size_t n = std::min(kChunk, m - c);
+    for (std::size_t t = 0; t < n; ++t) w1[t] = u1(c + t), w2[t] = u2(c + t);
+    rng::box_muller_two_words(w1, w2, n, z + c);
+  }
+}
+
 // z[t] = ζ of blocks a[t] (and b[t], read under the blocks feed only) for t < m: one switch, then a plain loop.
 template <rng::Distribution D, class Block>
 inline void feed_zetas(rng::Feed f, const Block* a, const Block* b, double* z, std::size_t m) {
@@ -39,11 +52,11 @@ inline void feed_zetas(rng::Feed f, const Block* a, const Block* b, double* z, s
             rng::box_muller_words(w, n, z + c);
           }
         } else {
-          for (std::size_t t = 0; t < m; ++t) z[t] = rng::box_muller(a[t]);
+          two_word_zetas(m, z, [a](std::size_t t) { return a[t][0]; }, [a](std::size_t t) { return a[t][1]; });
         }
         return;
       case rng::Feed::blocks:
-        for (std::size_t t = 0; t < m; ++t) z[t] = rng::box_muller_blocks(a[t], b[t]);
+        two_word_zetas(m, z, [a](std::size_t t) { return a[t][0]; }, [b](std::size_t t) { return b[t][0]; });
         return;
       case rng::Feed::inverse: {
         // The batched Φ⁻¹ (the scalar one's bits, eight lanes at a time) on chunks of uniforms.

@@ -22,32 +22,6 @@ namespace batch_detail {
 using simd::u32x16;
 using simd::u64x8;
 
-template <int R, class V, class W>
-inline void tea_rounds(V& x0, V& x1, const std::array<W, 4>& k, int rounds) {
-  const int n = R > 0 ? R : rounds;
-  W sum = 0;
-  for (int r = 0; r < n; ++r) {
-    sum += W(kTeaDelta);
-    x0 += ((x1 << 4) + k[0]) ^ ((x1 >> 5) + k[1]) ^ (x1 + sum);
-    x1 += ((x0 << 4) + k[2]) ^ ((x0 >> 5) + k[3]) ^ (x0 + sum);
-  }
-}
-
-// Two independent blocks in one loop body: a TEA cycle is a chain of ~8 dependent operations, so one block
-// alone leaves the SIMD ports waiting on latency; two interleaved keep them busy.
-template <int R, class V, class W>
-inline void tea_rounds2(V& a0, V& a1, V& b0, V& b1, const std::array<W, 4>& k, int rounds) {
-  const int n = R > 0 ? R : rounds;
-  W sum = 0;
-  for (int r = 0; r < n; ++r) {
-    sum += W(kTeaDelta);
-    a0 += ((a1 << 4) + k[0]) ^ ((a1 >> 5) + k[1]) ^ (a1 + sum);
-    b0 += ((b1 << 4) + k[0]) ^ ((b1 >> 5) + k[1]) ^ (b1 + sum);
-    a1 += ((a0 << 4) + k[2]) ^ ((a0 >> 5) + k[3]) ^ (a0 + sum);
-    b1 += ((b0 << 4) + k[2]) ^ ((b0 >> 5) + k[3]) ^ (b0 + sum);
-  }
-}
-
 // 16 counters start + c .. start + c + 15 as low and high 32-bit words (the carry crosses into the high word).
 inline void split_counters(std::uint64_t first, u32x16& lo, u32x16& hi) {
   constexpr u32x16 iota{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15};
@@ -57,13 +31,7 @@ inline void split_counters(std::uint64_t first, u32x16& lo, u32x16& hi) {
 }
 
 // 16 (x1:x0) pairs joined into 64-bit words, little-endian order: the low word of each pair comes first.
-inline void join_store(std::uint64_t* out, const u32x16& x0, const u32x16& x1) {
-  const u32x16 a = __builtin_shufflevector(x0, x1, 0, 16, 1, 17, 2, 18, 3, 19, 4, 20, 5, 21, 6, 22, 7, 23);
-  const u32x16 b = __builtin_shufflevector(x0, x1, 8, 24, 9, 25, 10, 26, 11, 27, 12, 28, 13, 29, 14, 30, 15, 31);
-  static_assert(std::endian::native == std::endian::little, "join_store assumes little-endian words");
-  simd::store(out, a);
-  simd::store(out + 8, b);
-}
+inline void join_store(std::uint64_t* out, const u32x16& x0, const u32x16& x1) { simd::join_words(out, x0, x1); }
 }  // namespace batch_detail
 
 // 32TEA(n) in counter mode: out[c] = g.stream(start, first + c)[0] for c < out.size().
@@ -94,9 +62,8 @@ void hash_batch(const Tea32<R>& g, std::span<const std::uint64_t> seeds, std::sp
   using namespace batch_detail;
   std::size_t c = 0;
   for (; c + 16 <= seeds.size(); c += 16) {
-    const u32x16 a = simd::load<u32x16>(seeds.data() + c), b = simd::load<u32x16>(seeds.data() + c + 8);
-    u32x16 x0 = __builtin_shufflevector(a, b, 0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
-    u32x16 x1 = __builtin_shufflevector(a, b, 1, 3, 5, 7, 9, 11, 13, 15, 17, 19, 21, 23, 25, 27, 29, 31);
+    u32x16 x0, x1;
+    simd::split_words(seeds.data() + c, x0, x1);
     tea_rounds<R>(x0, x1, g.key, g.rounds);
     join_store(out.data() + c, x0, x1);
   }
@@ -110,10 +77,7 @@ void stream_batch(const Tea64<R>& g, std::uint64_t start, std::uint64_t first, s
   constexpr u64x8 iota{0, 1, 2, 3, 4, 5, 6, 7};
   const std::array<std::uint64_t, 4> k = g.key64();
   const std::size_t calls = out.size() / 2;
-  auto store_ab = [&](std::size_t call, const u64x8& a, const u64x8& b) {
-    simd::store(out.data() + 2 * call, __builtin_shufflevector(a, b, 0, 8, 1, 9, 2, 10, 3, 11));
-    simd::store(out.data() + 2 * call + 8, __builtin_shufflevector(a, b, 4, 12, 5, 13, 6, 14, 7, 15));
-  };
+  auto store_ab = [&](std::size_t call, const u64x8& a, const u64x8& b) { simd::store_pairs(out.data() + 2 * call, a, b); };
   std::size_t c = 0;
   for (; c + 16 <= calls; c += 16) {
     u64x8 a0 = (start + first + c) + iota, a1 = u64x8{};

@@ -34,6 +34,10 @@ inline void fill_gauss(const GeneratorSpec& spec, std::uint64_t start, std::uint
 // words at a time (the pair loop's batches of 32TEA, SplitMix64 and Saru blocks take this path).
 void box_muller_words(const std::uint64_t* words, std::size_t n, double* out);
 
+// Box–Muller of two 64-bit words per number: out[k] = box_muller(std::array<std::uint64_t, 2>{u1[k], u2[k]}) bit
+// for bit, eight at a time (the blocks feed's first words, and the halves feed of two-word blocks).
+void box_muller_two_words(const std::uint64_t* u1, const std::uint64_t* u2, std::size_t n, double* out);
+
 // Output words per call (tea64, philox4x32, threefry2x64 give two; the others one).
 int words_per_call(const GeneratorSpec& spec);
 
