@@ -104,6 +104,7 @@ class PairLoop final : public PairForces {
            std::vector<std::pair<std::uint32_t, std::uint32_t>> tap_pairs)
       : noise_(std::move(noise)), zero_(noise_->zero()), words_(noise_->words()), k_(kernel), mode_(mode),
         threads_(threads > 0 ? threads : omp_get_max_threads()), tap_pairs_(std::move(tap_pairs)) {
+    series_ordered_ = std::all_of(tap_pairs_.begin(), tap_pairs_.end(), [](const auto& p) { return p.first < p.second; });
     scratch_.resize(threads_);
     noise_->threads(threads_);
     if (mode_ == PairMode::all) {
@@ -156,6 +157,13 @@ class PairLoop final : public PairForces {
     double zeta = 0;
     noise_->pair(pair_input(s, i, j, step), pair_slot(i, j, s.size()), words, zeta);
     return zeta;
+  }
+
+  // A hash's ζ in one batch through the noise kernel (the blocks NoiseKernel::pair gives, pair by pair).
+  void zetas_of(const System& s, const std::uint32_t* i, const std::uint32_t* j, std::size_t n, std::uint64_t step,
+                double* out) const override {
+    if (zero_ || noise_->stream()) return PairForces::zetas_of(s, i, j, n, step, out);
+    batch_of(s, i, j, n, step, out, {nullptr, nullptr});
   }
 
   double ns_per_number() const override { return noise_->ns_per_number(); }
@@ -908,6 +916,20 @@ class PairLoop final : public PairForces {
     return {i, j, dx, dy, dz, step};
   }
 
+  // Hash noise on pairs (i[t], j[t]), i < j, at this step: ζ into zeta and, when tap[0] is given, the blocks'
+  // words into tap[w], in one batch through the noise kernel (canonical() leaves such pairs as they are, so the
+  // blocks are NoiseKernel::pair's). Runs outside the parallel regions, on thread 0's scratch.
+  void batch_of(const System& s, const std::uint32_t* i, const std::uint32_t* j, std::size_t n, std::uint64_t step,
+                double* zeta, std::array<std::uint64_t*, 2> tap) const {
+    BatchInputs& in = batch_inputs_;
+    in.dx.resize(n), in.dy.resize(n), in.dz.resize(n);
+    for (std::size_t t = 0; t < n; ++t) {
+      const rng::PairInput p = pair_input(s, i[t], j[t], step);
+      in.dx[t] = p.dx, in.dy[t] = p.dy, in.dz[t] = p.dz;
+    }
+    noise_->pairs({i, j, n, in.dx.data(), in.dy.data(), in.dz.data(), step, 0, {tap[0], tap[1]}, zeta, nullptr}, 0);
+  }
+
   void record_series(const System& s, std::uint64_t step, Taps& taps) const {
     if (taps.series.size() != tap_pairs_.size()) {
       taps.series.resize(tap_pairs_.size());
@@ -916,6 +938,7 @@ class PairLoop final : public PairForces {
         taps.series[q].words_per_pair = words_;
       }
     }
+    if (!noise_->stream() && series_ordered_) return record_series_batch(s, step, taps);
     for (auto& ser : taps.series) {
       const std::uint32_t i = ser.i, j = ser.j;
       std::uint64_t words[2] = {0, 0};
@@ -927,6 +950,30 @@ class PairLoop final : public PairForces {
     }
   }
 
+  // record_series for a hash: the series' pairs in one batch.
+  void record_series_batch(const System& s, std::uint64_t step, Taps& taps) const {
+    const std::size_t n = taps.series.size();
+    BatchInputs& in = batch_inputs_;
+    in.i.resize(n), in.j.resize(n), in.zeta.resize(n), in.words[0].resize(n), in.words[1].resize(n);
+    for (std::size_t q = 0; q < n; ++q) in.i[q] = taps.series[q].i, in.j[q] = taps.series[q].j;
+    std::array<std::uint64_t*, 2> tap{in.words[0].data(), words_ > 1 ? in.words[1].data() : nullptr};
+    batch_of(s, in.i.data(), in.j.data(), n, step, in.zeta.data(), tap);
+    for (std::size_t q = 0; q < n; ++q) {
+      auto& ser = taps.series[q];
+      ser.steps.push_back(static_cast<std::int64_t>(step));
+      for (int w = 0; w < words_; ++w) ser.words[w].push_back(in.words[std::size_t(w)][q]);
+      ser.zeta.push_back(in.zeta[q]);
+    }
+  }
+
+  // batch_of's and record_series_batch's buffers (serial callers only).
+  struct BatchInputs {
+    std::vector<std::uint32_t> i, j;
+    std::vector<double> dx, dy, dz, zeta;
+    std::array<std::vector<std::uint64_t>, 2> words;
+  };
+  mutable BatchInputs batch_inputs_;
+
   std::unique_ptr<NoiseKernel> noise_;
   bool zero_;
   int words_;
@@ -934,6 +981,7 @@ class PairLoop final : public PairForces {
   PairMode mode_;
   int threads_;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> tap_pairs_;
+  bool series_ordered_ = false;  // every tapped pair has i < j (record_series' batch keeps their blocks)
   std::vector<Row> rows_;  // all mode
   std::vector<double> fcx_, fcy_, fcz_;  // the conservative force per bead (cells mode: in sorted order)
   std::vector<float> xf_, yf_, zf_;      // all mode: the positions rounded (round_positions)

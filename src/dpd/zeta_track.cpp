@@ -73,23 +73,32 @@ void ZetaTracker::close_window() {
 
 void ZetaTracker::record(const System& s, const PairForces& pair, std::uint64_t step) {
   if (in_window_ == 0) start_window(s);
-  for (std::size_t q = 0; q < stars_.size(); ++q) {
-    double z[2] = {NAN, NAN};
-    for (std::size_t slot = 0; slot < 2; ++slot) {
-      Track& t = tracks_[2 * q + slot];
-      if (!t.alive) continue;
-      if (!(separation2(s, t.i, t.j) < rc2_)) {
-        t.alive = false;  // left r_c: its segment ends here
-        continue;
-      }
-      z[slot] = pair.zeta_of(s, t.i, t.j, step);
-      if (std::isnan(z[slot])) {
+  // The tracks still inside r_c, their ζ in one call; a track that left r_c ends its segment here.
+  live_.clear(), live_i_.clear(), live_j_.clear();
+  for (std::size_t k = 0; k < tracks_.size(); ++k) {
+    Track& t = tracks_[k];
+    if (!t.alive) continue;
+    if (!(separation2(s, t.i, t.j) < rc2_)) {
+      t.alive = false;
+      continue;
+    }
+    live_.push_back(k), live_i_.push_back(t.i), live_j_.push_back(t.j);
+  }
+  live_zeta_.resize(live_.size());
+  pair.zetas_of(s, live_i_.data(), live_j_.data(), live_.size(), step, live_zeta_.data());
+  double z[2] = {NAN, NAN};
+  std::size_t next = 0;
+  for (std::size_t k = 0; k < tracks_.size(); ++k) {
+    const bool live = next < live_.size() && live_[next] == k;
+    z[k % 2] = live ? live_zeta_[next++] : NAN;
+    if (live) {
+      if (std::isnan(z[k % 2])) {
         unknown_ = true;
         return;
       }
-      t.zeta.push_back(z[slot]);
+      tracks_[k].zeta.push_back(z[k % 2]);
     }
-    if (tracks_[2 * q].alive && tracks_[2 * q + 1].alive) {
+    if (k % 2 == 1 && tracks_[k - 1].alive && tracks_[k].alive) {
       const double p = z[0] * z[1];
       shared_ += p, shared2_ += p * p, ++shared_n_;
     }

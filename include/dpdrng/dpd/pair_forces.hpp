@@ -116,6 +116,11 @@ class PairForces {
   // recomputed like the pair series; NaN where it cannot be known (the mt19937 stream outside all-pairs mode, a
   // baseline without noise).
   virtual double zeta_of(const System& s, std::uint32_t i, std::uint32_t j, std::uint64_t step) const = 0;
+  // zeta_of for the n pairs (i[t] < j[t]) at once: out[t] = zeta_of(s, i[t], j[t], step), bit for bit.
+  virtual void zetas_of(const System& s, const std::uint32_t* i, const std::uint32_t* j, std::size_t n,
+                        std::uint64_t step, double* out) const {
+    for (std::size_t t = 0; t < n; ++t) out[t] = zeta_of(s, i[t], j[t], step);
+  }
   // Whether the following compute() calls sum the configurational temperature's parts (a scatter per pair: the
   // sampled steps only).
   void sum_configurational(bool on) { configurational_ = on; }

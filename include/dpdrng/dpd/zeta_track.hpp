@@ -36,6 +36,9 @@ class ZetaTracker {
   double rc2_;
   std::vector<std::uint32_t> stars_;
   std::vector<Track> tracks_;  // two per star
+  std::vector<std::size_t> live_;  // record()'s tracks inside r_c, their pairs and ζ
+  std::vector<std::uint32_t> live_i_, live_j_;
+  std::vector<double> live_zeta_;
   int in_window_ = 0;
   bool unknown_ = false;       // a ζ the pair forces cannot recompute
   // Σζ², their count; per lag Σ products, Σ products², count; the shared-bead products likewise.
