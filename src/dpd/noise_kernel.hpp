@@ -4,6 +4,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <limits>
 #include <memory>
@@ -149,16 +150,31 @@ class NoiseKernelOf final : public NoiseKernel {
 
   void pairs_batched(const PairBatch& b, Scratch& sc) {
     const std::size_t k = b.k;
-    sc.i.resize(k), sc.j.resize(k), sc.dx.resize(k), sc.dy.resize(k), sc.dz.resize(k);
-    for (std::size_t t = 0; t < k; ++t) {
-      const rng::PairInput p = rng::canonical({b.i[t], b.j[t], b.dx[t], b.dy[t], b.dz[t], b.step});
-      sc.i[t] = p.i, sc.j[t] = p.j, sc.dx[t] = p.dx, sc.dy[t] = p.dy, sc.dz[t] = p.dz;
+    // rng::canonical() as selects, and only the inputs the seeding reads, in loops that vectorise.
+    if constexpr (Noise::kDistance) {
+      sc.dx.resize(k), sc.dy.resize(k), sc.dz.resize(k);
+      canonical_separation(b.i, b.j, b.dx, k, sc.dx.data());
+      canonical_separation(b.i, b.j, b.dy, k, sc.dy.data());
+      canonical_separation(b.i, b.j, b.dz, k, sc.dz.data());
+    } else {
+      sc.i.resize(k), sc.j.resize(k);
+      for (std::size_t t = 0; t < k; ++t) sc.i[t] = std::min(b.i[t], b.j[t]), sc.j[t] = std::max(b.i[t], b.j[t]);
     }
     batch_zetas(sc, sc.i.data(), sc.j.data(), sc.dx.data(), sc.dy.data(), sc.dz.data(), b.step, k, b.zeta);
     if (b.tap[0])
       for (int w = 0; w < Noise::kWords; ++w)
         for (std::size_t t = 0; t < k; ++t) b.tap[w][t] = sc.blk[t][w];
     if (b.used) copy_used(sc.blk.data(), sc.blk2.data(), k, b.used);
+  }
+
+  // out[t] = d[t], negated where i[t] > j[t] (canonical()'s negation: the sign bit flipped, as unary minus does),
+  // without a branch on the order, which in cells mode is a coin toss.
+  static void canonical_separation(const std::uint32_t* __restrict i, const std::uint32_t* __restrict j,
+                                   const double* __restrict d, std::size_t k, double* __restrict out) {
+    for (std::size_t t = 0; t < k; ++t) {
+      const std::uint64_t flip = std::uint64_t(i[t] > j[t]) << 63;
+      out[t] = std::bit_cast<double>(std::bit_cast<std::uint64_t>(d[t]) ^ flip);
+    }
   }
 
   void batch_zetas(Scratch& sc, const std::uint32_t* i, const std::uint32_t* j, const double* dx, const double* dy,

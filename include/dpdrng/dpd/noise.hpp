@@ -90,6 +90,7 @@ struct HashNoise {
   static constexpr int kWords = G::kWords;
   static constexpr bool kStream = false;
   static constexpr bool kZero = false;
+  static constexpr bool kDistance = S == rng::Seeding::distance;  // raw_batch reads the separations, not the ids
   G gen;
   std::uint64_t seed = 0;
   rng::Feed feed_ = rng::Feed::halves;
