@@ -12,8 +12,8 @@ set grid
 set datafile separator comma
 set datafile missing "nan"
 set key inside bottom right noenhanced opaque box samplen 2 spacing 1.1 font ',10'
-set arrow from graph 0, first 4.86732 to graph 1, first 4.86732 nohead dt 2 lw 2 lc rgb 'black'
-set label "mt19937" at graph 0.01, first 4.86732 offset 0,0.6 font ',10' tc rgb 'black'
+set arrow from graph 0, first 0.629303 to graph 1, first 0.629303 nohead dt 2 lw 2 lc rgb 'black'
+set label "mt19937" at graph 0.01, first 0.629303 offset 0,0.6 font ',10' tc rgb 'black'
 set title "Cost of one random number inside the DPD run (gauss)" noenhanced
 plot "cost_vs_rounds_gauss.csv" index 0 using 2:3 with linespoints lw 2 pt 7 lc rgb '#0072B2' title "tea32 distance", \
      "cost_vs_rounds_gauss.csv" index 1 using 2:3 with linespoints lw 2 pt 7 lc rgb '#E69F00' title "tea64 distance"

@@ -1,4 +1,4 @@
-# Cost (best of 5 × 4096 calls in the run) against temperature shift (uniform; Intel(R) Xeon(R) Processor (family 6, model 207))
+# Cost (best of 5 × 4096 calls in the run) against temperature shift (uniform; AMD EPYC (family 25, model 17))
 # Data: speed_vs_accuracy_uniform.csv (column 1 the series; one block per series)
 # Redraw: gnuplot -e "set terminal svg; set output 'speed_vs_accuracy_uniform.svg'" speed_vs_accuracy_uniform.gp
 set xlabel "cost per random number [ns]" noenhanced
@@ -13,11 +13,11 @@ set key outside right top noenhanced opaque box samplen 2 spacing 1.1 font ',10'
 set object 1 rectangle from graph 0, first -1 to graph 1, first 1 behind fillcolor rgb '#DDEEDD' fillstyle solid 1.0 noborder
 set label 1 "equivalence margin ±1" at graph 0.01, first 1 offset 0,-0.8 font ',10' tc rgb '#336633' front
 set arrow 1 from graph 0, first 0 to graph 1, first 0 nohead lw 1 lc rgb 'black'
-set arrow from first 5.15379, graph 0 to first 5.15379, graph 1 nohead dt 2 lc rgb 'black'
-set label "mt19937" at first 5.15379, graph 0.96 offset 0.5,0 font ',10'
+set arrow from first 0.646545, graph 0 to first 0.646545, graph 1 nohead dt 2 lc rgb 'black'
+set label "mt19937" at first 0.646545, graph 0.96 offset 0.5,0 font ',10'
 set yrange [-2.3:2.3]
-set xrange [0.404569:21.5214]
-set title "Cost (best of 5 × 4096 calls in the run) against temperature shift (uniform; Intel(R) Xeon(R) Processor (family 6, model 207))" noenhanced
+set xrange [0.239352:18.4617]
+set title "Cost (best of 5 × 4096 calls in the run) against temperature shift (uniform; AMD EPYC (family 25, model 17))" noenhanced
 plot "speed_vs_accuracy_uniform.csv" index 0 using 2:3:4:5:6 with yerrorbars pt variable ps 1.3 lw 1.5 lc rgb '#0072B2' title "tea32 distance", \
      "speed_vs_accuracy_uniform.csv" index 1 using 2:3:4:5:6 with yerrorbars pt variable ps 1.3 lw 1.5 lc rgb '#E69F00' title "tea64 distance", \
      "speed_vs_accuracy_uniform.csv" index 2 using 2:3:(column(7) > 0 ? 9 : 11) with points pt variable ps 1.6 lc rgb '#333333' title "", \
