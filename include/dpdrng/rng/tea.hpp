@@ -14,12 +14,18 @@ namespace dpdrng::rng {
 
 inline constexpr std::uint32_t kTeaDelta = 0x9E3779B9u;
 
-// One Feistel cycle on words of type W; the paper uses the same shifts, delta and key for 64-bit words.
+// One Feistel cycle whose round sum is already advanced, on words or SIMD lanes V of words W (a key of plain
+// words); the paper uses the same shifts, delta and key for 64-bit words.
+template <class V, class W>
+constexpr void tea_feistel(V& x0, V& x1, W sum, const std::array<W, 4>& k) {
+  x0 += ((x1 << 4) + k[0]) ^ ((x1 >> 5) + k[1]) ^ (x1 + sum);
+  x1 += ((x0 << 4) + k[2]) ^ ((x0 >> 5) + k[3]) ^ (x0 + sum);
+}
+
 template <class W>
 constexpr void tea_cycle(W& x0, W& x1, W& sum, const std::array<W, 4>& k) {
   sum += W(kTeaDelta);
-  x0 += ((x1 << 4) + k[0]) ^ ((x1 >> 5) + k[1]) ^ (x1 + sum);
-  x1 += ((x0 << 4) + k[2]) ^ ((x0 >> 5) + k[3]) ^ (x0 + sum);
+  tea_feistel(x0, x1, sum, k);
 }
 
 // Compile-time round count: the loop unrolls, so a hot loop pays for the hash alone.
@@ -35,32 +41,22 @@ constexpr void tea_encrypt(W& x0, W& x1, const std::array<W, 4>& k, int rounds) 
   for (int r = 0; r < rounds; ++r) tea_cycle(x0, x1, sum, k);
 }
 
-// The cycle on SIMD lanes V of words W (a key of plain words), each lane bit for bit tea_encrypt's; R > 0: R
-// rounds, R == 0: `rounds`. The batched paths keep a state in registers across all rounds.
+// The cycles on SIMD lanes, each lane bit for bit tea_encrypt's; R > 0: R rounds, R == 0: `rounds`. The batched
+// paths keep a state in registers across all rounds.
 template <int R, class V, class W>
 inline void tea_rounds(V& x0, V& x1, const std::array<W, 4>& k, int rounds) {
   const int n = R > 0 ? R : rounds;
   W sum = 0;
-  for (int r = 0; r < n; ++r) {
-    sum += W(kTeaDelta);
-    x0 += ((x1 << 4) + k[0]) ^ ((x1 >> 5) + k[1]) ^ (x1 + sum);
-    x1 += ((x0 << 4) + k[2]) ^ ((x0 >> 5) + k[3]) ^ (x0 + sum);
-  }
+  for (int r = 0; r < n; ++r) sum += W(kTeaDelta), tea_feistel(x0, x1, sum, k);
 }
 
 // Two independent blocks in one loop body: a TEA cycle is a chain of ~8 dependent operations, so one block
-// alone leaves the SIMD ports waiting on latency; two interleaved keep them busy.
+// alone leaves the SIMD ports waiting on latency; two side by side keep them busy.
 template <int R, class V, class W>
 inline void tea_rounds2(V& a0, V& a1, V& b0, V& b1, const std::array<W, 4>& k, int rounds) {
   const int n = R > 0 ? R : rounds;
   W sum = 0;
-  for (int r = 0; r < n; ++r) {
-    sum += W(kTeaDelta);
-    a0 += ((a1 << 4) + k[0]) ^ ((a1 >> 5) + k[1]) ^ (a1 + sum);
-    b0 += ((b1 << 4) + k[0]) ^ ((b1 >> 5) + k[1]) ^ (b1 + sum);
-    a1 += ((a0 << 4) + k[2]) ^ ((a0 >> 5) + k[3]) ^ (a0 + sum);
-    b1 += ((b0 << 4) + k[2]) ^ ((b0 >> 5) + k[3]) ^ (b0 + sum);
-  }
+  for (int r = 0; r < n; ++r) sum += W(kTeaDelta), tea_feistel(a0, a1, sum, k), tea_feistel(b0, b1, sum, k);
 }
 
 // R > 0: rounds fixed at compile time; R == 0: `rounds` chosen at run time (any 1..64).
