@@ -24,8 +24,7 @@ struct NoSum {
 }  // namespace
 
 PairwiseNoseHooverLangevin::PairwiseNoseHooverLangevin(const WaterConfig& cfg)
-    : rc_(cfg.rc),
-      kT_(cfg.kT),
+    : kT_(cfg.kT),
       gamma_(cfg.gamma),
       mu_(cfg.pnhln_mu),
       dt_(cfg.dt),

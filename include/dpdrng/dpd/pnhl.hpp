@@ -40,7 +40,7 @@ class PairwiseNoseHooverLangevin {
   void friction_half();
   double pair_g();
 
-  double rc_, kT_, gamma_, mu_, dt_;
+  double kT_, gamma_, mu_, dt_;
   int threads_;
   double xi_ = 0;
   rng::Mt19937 mt_;
