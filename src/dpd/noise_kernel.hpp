@@ -121,8 +121,8 @@ class NoiseKernelOf final : public NoiseKernel {
     }
   }
 
-  // A batched generator is called once per batch and only for the pairs inside r_c (the other kernels hash every
-  // candidate, in SIMD lanes): the same blocks for the pairs whose ζ is used.
+  // A row without a tap under a batched generator: one call for the row's pairs inside r_c, the same blocks the
+  // tapped path keeps.
   std::size_t row_batched(const RowBatch& b, Scratch& sc) {
     const std::size_t k = compact_in_range(b.i + 1, b.m, b.rc2, b.dx, b.dy, b.dz, b.r2, b.j);
     sc.i.assign(k, b.i);
