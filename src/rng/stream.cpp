@@ -91,36 +91,32 @@ void box_muller_words(const std::uint64_t* w, std::size_t n, double* o) {
   for (; c < n; ++c) o[c] = box_muller(std::array<std::uint64_t, 1>{w[c]});
 }
 
+namespace {
+
+// out[k] = box_muller({u1[S·k], u2[S·k]}) bit for bit, eight at a time: the pair loop's two word arrays (S = 1) and
+// a stream of S-word blocks, whose Gaussian reads each block's first two words (u1 = w, u2 = w + 1).
+template <std::size_t S>
 void box_muller_two_words(const std::uint64_t* u1, const std::uint64_t* u2, std::size_t n, double* o) {
   std::size_t c = 0;
   for (; c + 8 <= n; c += 8) {
     alignas(64) double radius2[8], cosine[8];
     for (std::size_t j = 0; j < 8; ++j) {
-      const BoxMullerParts p = box_muller_parts(std::array<std::uint64_t, 2>{u1[c + j], u2[c + j]});
+      const BoxMullerParts p = box_muller_parts(std::array<std::uint64_t, 2>{u1[S * (c + j)], u2[S * (c + j)]});
       radius2[j] = p.radius2;
       cosine[j] = p.cosine;
     }
     simd::store(o + c, simd::sqrt(simd::load<simd::f64x8>(radius2)) * simd::load<simd::f64x8>(cosine));
   }
-  for (; c < n; ++c) o[c] = box_muller(std::array<std::uint64_t, 2>{u1[c], u2[c]});
+  for (; c < n; ++c) o[c] = box_muller(std::array<std::uint64_t, 2>{u1[S * c], u2[S * c]});
+}
+
+}  // namespace
+
+void box_muller_two_words(const std::uint64_t* u1, const std::uint64_t* u2, std::size_t n, double* o) {
+  box_muller_two_words<1>(u1, u2, n, o);
 }
 
 namespace {
-
-template <int W>
-void gauss_words64(const std::uint64_t* w, std::size_t n, double* o) {
-  std::size_t c = 0;
-  for (; c + 8 <= n; c += 8) {
-    alignas(64) double radius2[8], cosine[8];
-    for (std::size_t j = 0; j < 8; ++j) {
-      const BoxMullerParts p = box_muller_parts(block_at<W>(w, c + j));
-      radius2[j] = p.radius2;
-      cosine[j] = p.cosine;
-    }
-    simd::store(o + c, simd::sqrt(simd::load<simd::f64x8>(radius2)) * simd::load<simd::f64x8>(cosine));
-  }
-  for (; c < n; ++c) o[c] = box_muller(block_at<W>(w, c));
-}
 
 template <int W>
 void map_words(Distribution dist, std::span<const std::uint64_t> words, std::span<double> out) {
@@ -132,7 +128,7 @@ void map_words(Distribution dist, std::span<const std::uint64_t> words, std::spa
   } else if constexpr (W == 1) {
     box_muller_words(w, n, o);
   } else {
-    gauss_words64<W>(w, n, o);
+    box_muller_two_words<W>(w, w + 1, n, o);
   }
 }
 
