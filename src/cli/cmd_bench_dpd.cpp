@@ -410,7 +410,7 @@ std::vector<Oversubscribed> measure_oversubscription(const BenchDpdArgs& a) {
 
 void print_oversubscription(const std::vector<Oversubscribed>& rows) {
   std::cout << "\nbeside a busy loop on one core, tea32(1), one and two threads alternately (medians; the ratio is "
-               "the median of the pairs' t2/t1, at most 1.3 wanted):\n";
+               "the median of the pairs' t2/t1; a run picks its team from measured step times, so at most 1 wanted):\n";
   for (const auto& o : rows)
     std::cout << std::setprecision(3) << "  " << std::left << std::setw(30) << o.scene << std::right << " 1 thread "
               << o.one.median_s << " s, 2 threads asked (" << o.two.threads << " used) " << o.two.median_s

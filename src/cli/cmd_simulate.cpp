@@ -83,6 +83,17 @@ std::string zeta_line(const dpd::RunResult& r) {
   return o.str();
 }
 
+// "2 thread(s)", or with the steps each team size ran where the run moved to fewer: "2 thread(s) (steps on
+// 2: 140, on 1: 10)".
+std::string threads_text(const dpd::Timings& t) {
+  std::string text = std::to_string(t.threads) + " thread(s)";
+  if (t.steps_by_team.size() < 2) return text;
+  std::string steps;
+  for (auto it = t.steps_by_team.rbegin(); it != t.steps_by_team.rend(); ++it)
+    steps += (steps.empty() ? "" : ", on ") + std::to_string(it->first) + ": " + std::to_string(it->second);
+  return text + " (steps on " + steps + ")";
+}
+
 void print_human(const dpd::RunResult& r) {
   // A run that blew up has no observables: "n/a", never a number.
   const bool na = dpd::blew_up(r.status);
@@ -122,7 +133,7 @@ void print_human(const dpd::RunResult& r) {
             << "momentum drift / bead  " << r.momentum_drift << "\n"
             << "zeta (pairs in r_c)    " << zeta_line(r) << "\n"
             << "time                   " << r.timings.total_s << " s, " << r.timings.particle_steps_per_s
-            << " particle-steps/s, " << r.timings.threads << " thread(s)\n"
+            << " particle-steps/s, " << threads_text(r.timings) << "\n"
             << "random numbers         " << r.timings.random_numbers << ", " << r.timings.ns_per_number
             << " ns each (RNG share of a step, by difference against zeta = 0: " << 100 * r.timings.rng_share_estimate << " %)\n";
 }

@@ -205,7 +205,7 @@ BilayerResult run_bilayer(const BilayerConfig& in, const RunHooks& hooks) {
 
   BilayerObserver obs(cfg, st, last_bonded, r);
   const SceneLimits limits{cfg.steps, cfg.equilibrate, cfg.kT, cfg.max_temperature, cfg.min_distance,
-                           cfg.rc};
+                           cfg.rc, cfg.threads};
   // Step k moves with the Δt of its phase; the first step at dt reuses forces from dt_warmup's loop, which
   // differ only in the random force's amplitude of one evaluation.
   const SceneRun run = run_scene(

@@ -34,14 +34,14 @@ ForceSums ModifiedVelocityVerlet::step(System& s, const ForceFn& force) {
   const double *fx = s.fx.data(), *fy = s.fy.data(), *fz = s.fz.data();
   double *tx = vtx_.data(), *ty = vty_.data(), *tz = vtz_.data();
   // The wrap is per bead, so it joins the drift's pass over each thread's share of the beads.
-#pragma omp parallel num_threads(threads_)
+#pragma omp parallel num_threads(team_size(threads_))
   {
     const auto [lo, hi] = team_share(n, omp_get_thread_num(), omp_get_num_threads());
     drift(lo, hi, x, vx, fx, tx), drift(lo, hi, y, vy, fy, ty), drift(lo, hi, z, vz, fz, tz);
     s.wrap(lo, hi);
   }
   const ForceSums sums = force(s, VelocityView{tx, ty, tz});
-#pragma omp parallel num_threads(threads_)
+#pragma omp parallel num_threads(team_size(threads_))
   {
     const auto [lo, hi] = team_share(n, omp_get_thread_num(), omp_get_num_threads());
     kick(lo, hi, vx, fx), kick(lo, hi, vy, fy), kick(lo, hi, vz, fz);

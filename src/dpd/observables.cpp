@@ -370,7 +370,7 @@ void RdfHistogram::sample(const System& s, int block) {
   const bool cells = grid.usable();
   const rdf_pairs::SortedPositions sorted = cells ? rdf_pairs::SortedPositions(s, grid) : rdf_pairs::SortedPositions{};
   const std::int64_t n = cells ? std::int64_t(grid.start().size()) - 1 : static_cast<std::int64_t>(s.size());
-#pragma omp parallel num_threads(threads_) if (cells)
+#pragma omp parallel num_threads(team_size(threads_)) if (cells)
   {
     rdf_pairs::Binner mine(bins_, rmax_);
     std::vector<double> r2;

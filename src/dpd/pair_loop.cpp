@@ -242,7 +242,7 @@ class PairLoop final : public PairForces {
     const std::size_t n = c.s.size(), groups = (n + kGroup - 1) / kGroup;
     const bool batched = !noise_->stream() && !c.tap;
     if (batched) round_positions(c.s);
-#pragma omp parallel for num_threads(threads_) schedule(dynamic, 1)
+#pragma omp parallel for num_threads(team_size(threads_)) schedule(dynamic, 1)
     for (std::size_t g = 0; g < groups; ++g) {
       const auto i0 = static_cast<std::uint32_t>(g * kGroup);
       const auto i1 = static_cast<std::uint32_t>(std::min(n, (g + 1) * kGroup));
@@ -750,7 +750,7 @@ class PairLoop final : public PairForces {
   ForceSums compute_cells(const Ctx& cx) {
     System& s = cx.s;
     const bool team = s.size() >= SortedCells::kParallelBeads;
-    cells_.prepare(s, k_.rc, team ? threads_ : 1);
+    cells_.prepare(s, k_.rc, team ? team_size(threads_) : 1);
     resize_sorted(s.size());
     const int nc = cells_.cells();
     cell_sums_.resize(std::size_t(nc));
@@ -762,7 +762,7 @@ class PairLoop final : public PairForces {
     slot_base_.assign(stream ? std::size_t(nc) + 1 : 0, 0);
     // One region for the step's pair forces: three barriers (inside the sort, after it, after the gather;
     // the stream reference adds two), then the layers, which wait for their neighbours only, then the join.
-#pragma omp parallel num_threads(threads_) if (team)
+#pragma omp parallel num_threads(team_size(threads_)) if (team)
     {
       cells_.sort(s);
       // The team actually granted, which OMP_THREAD_LIMIT or an enclosing region can make smaller than asked:

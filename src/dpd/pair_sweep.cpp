@@ -106,7 +106,7 @@ void PairSweep::record(const System& s) {
                          double dx, double dy, double dz, double r2, std::vector<Pair>& out) {
     out.push_back(make_pair(a, b, dx, dy, dz, r2, rc));
   };
-  const int threads = threads_ > 0 ? threads_ : omp_get_max_threads();
+  const int threads = team_size(threads_);
   const Box box = s.box;
   // Each slab fills its own list: any team gives the same lists.
 #pragma omp parallel for num_threads(threads) schedule(static)

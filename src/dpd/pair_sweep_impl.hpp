@@ -78,7 +78,7 @@ Acc PairSweep::sweep(System& s, bool one_thread, Visit&& visit) {
   std::vector<std::size_t> colour_start;
   const std::vector<int> order = slab_order(colour_start);
   std::vector<Acc> slab_acc(order.size());
-  const int threads = one_thread ? 1 : threads_ > 0 ? threads_ : omp_get_max_threads();
+  const int threads = one_thread ? 1 : team_size(threads_);
   const Box box = s.box;
 #pragma omp parallel num_threads(threads)
   for (int k = 0; k < pair_sweep_detail::kColours; ++k) {
@@ -101,7 +101,7 @@ template <class Acc, class Visit>
 Acc PairSweep::replay(Visit&& visit) {
   std::vector<Acc> slab_acc(slab_pairs_.size());
   double* const v[3] = {vx_.data(), vy_.data(), vz_.data()};
-  const int threads = threads_ > 0 ? threads_ : omp_get_max_threads();
+  const int threads = team_size(threads_);
 #pragma omp parallel num_threads(threads)
   for (int k = 0; k < pair_sweep_detail::kColours; ++k) {
     if (colour_start_[k] == colour_start_[k + 1]) continue;  // the same for every thread

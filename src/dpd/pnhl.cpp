@@ -37,7 +37,7 @@ void PairwiseNoseHooverLangevin::drift_half(System& s) const {
   const double h = 0.5 * dt_;
   double *x = s.x.data(), *y = s.y.data(), *z = s.z.data();
   const double *vx = s.vx.data(), *vy = s.vy.data(), *vz = s.vz.data();
-#pragma omp parallel for num_threads(threads_) schedule(static)
+#pragma omp parallel for num_threads(team_size(threads_)) schedule(static)
   for (std::size_t i = 0; i < n; ++i) x[i] += h * vx[i], y[i] += h * vy[i], z[i] += h * vz[i];
   s.wrap();
 }
@@ -47,7 +47,7 @@ void PairwiseNoseHooverLangevin::kick_half(System& s) const {
   const double h = 0.5 * dt_;
   double *vx = s.vx.data(), *vy = s.vy.data(), *vz = s.vz.data();
   const double *fx = s.fx.data(), *fy = s.fy.data(), *fz = s.fz.data();
-#pragma omp parallel for num_threads(threads_) schedule(static)
+#pragma omp parallel for num_threads(team_size(threads_)) schedule(static)
   for (std::size_t i = 0; i < n; ++i) vx[i] += h * fx[i], vy[i] += h * fy[i], vz[i] += h * fz[i];
 }
 

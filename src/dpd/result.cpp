@@ -123,6 +123,15 @@ nlohmann::json to_json(const Stat& s) {
           {"n", s.n}};
 }
 
+namespace {
+// {"moves": k, "steps": {"2": n2, "1": n1}}: the steps each team size ran (JSON keys are strings).
+nlohmann::json team_json(const Timings& t) {
+  nlohmann::json steps = nlohmann::json::object();
+  for (const auto& [team, n] : t.steps_by_team) steps[std::to_string(team)] = n;
+  return {{"moves", t.team_moves}, {"steps", steps}};
+}
+}  // namespace
+
 nlohmann::json timings_json(const Timings& t) {
   return {{"total_s", t.total_s},
           {"force_s", t.force_s},
@@ -134,7 +143,8 @@ nlohmann::json timings_json(const Timings& t) {
           {"ns_per_zeta", t.ns_per_zeta},
           {"rng_share_estimate", t.rng_share_estimate},
           {"list_builds", t.list_builds},
-          {"threads", t.threads}};
+          {"threads", t.threads},
+          {"team", team_json(t)}};
 }
 
 void put_mean_sem(nlohmann::json& j, const std::string& key, const Stat& s) {

@@ -40,9 +40,13 @@ SceneRun run_scene(System& s, const SceneLimits& limits, const std::function<For
   const auto p0 = r.momentum_initial = s.momentum();
   auto t_production = t_start;
   const std::int64_t progress_every = std::max<std::int64_t>(1, limits.steps / 50);
+  TeamGovernor governor(limits.threads);
   for (std::int64_t step = 1; step <= limits.steps; ++step) {
     if (step == limits.equilibrate + 1) t_production = SceneClock::now();
+    const TeamCap cap(governor.team());
+    const auto t_step = SceneClock::now();
     f = advance(step);
+    governor.record(seconds_between(t_step, SceneClock::now()));
     r.steps_done = step;
     StepSums x = step_sums(s, step, f, V);
     x.production = step > limits.equilibrate;
@@ -63,6 +67,7 @@ SceneRun run_scene(System& s, const SceneLimits& limits, const std::function<For
   r.total_s = seconds_between(t_start, t_end);
   r.production_s = r.steps_done > limits.equilibrate ? seconds_between(t_production, t_end) : 0.0;
   r.momentum_final = s.momentum();
+  r.steps_by_team = governor.steps_by_team(), r.team_moves = governor.moves();
   return r;
 }
 
@@ -92,6 +97,7 @@ Timings scene_timings(const SceneRun& run, const ForceCounters& counters, const 
         std::min(1.0, counters.seconds / total);
   t.list_builds = pair.list_builds();
   t.threads = threads;
+  t.steps_by_team = run.steps_by_team, t.team_moves = run.team_moves;
   return t;
 }
 

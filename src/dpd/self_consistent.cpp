@@ -20,7 +20,7 @@ Triple scratch(std::vector<double> (&a)[3], std::size_t n) {
 // Runs body(lo, hi) on each thread's share of n beads: per-bead work, so any team gives the same bits.
 template <class Body>
 void per_bead(std::size_t n, int threads, Body&& body) {
-#pragma omp parallel num_threads(threads)
+#pragma omp parallel num_threads(team_size(threads))
   {
     const auto [lo, hi] = team_share(n, omp_get_thread_num(), omp_get_num_threads());
     body(lo, hi);

@@ -93,14 +93,14 @@ ForceSums ShardlowS1::step(System& s, const ForceFn& force) {
   double *x = s.x.data(), *y = s.y.data(), *z = s.z.data();
   double *vx = s.vx.data(), *vy = s.vy.data(), *vz = s.vz.data();
   const double *fx = s.fx.data(), *fy = s.fy.data(), *fz = s.fz.data();
-#pragma omp parallel for num_threads(threads_) schedule(static)
+#pragma omp parallel for num_threads(team_size(threads_)) schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     vx[i] += half * fx[i], vy[i] += half * fy[i], vz[i] += half * fz[i];
     x[i] += dt * vx[i], y[i] += dt * vy[i], z[i] += dt * vz[i];
   }
   s.wrap();
   const ForceSums sums = force(s, VelocityView{vx, vy, vz});
-#pragma omp parallel for num_threads(threads_) schedule(static)
+#pragma omp parallel for num_threads(team_size(threads_)) schedule(static)
   for (std::size_t i = 0; i < n; ++i) vx[i] += half * fx[i], vy[i] += half * fy[i], vz[i] += half * fz[i];
   ForceSums out = sums;
   out.zeta = drawn;

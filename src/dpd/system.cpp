@@ -1,16 +1,9 @@
 #include "dpdrng/dpd/system.hpp"
 
-#include <omp.h>
-
 #include <cmath>
 #include <random>
 
 namespace dpdrng::dpd {
-
-int team_threads(int requested, std::size_t beads, std::size_t team_beads) {
-  if (beads < team_beads) return 1;
-  return requested > 0 ? requested : omp_get_max_threads();
-}
 
 void System::resize(std::size_t n) {
   for (auto* v : {&x, &y, &z, &vx, &vy, &vz, &fx, &fy, &fz}) v->assign(n, 0.0);

@@ -196,7 +196,7 @@ RunResult run_water(const WaterConfig& in, const RunHooks& hooks) {
   };
 
   const SceneLimits limits{cfg.steps, cfg.equilibrate, cfg.kT, cfg.max_temperature, cfg.min_distance,
-                           cfg.rc};
+                           cfg.rc, cfg.threads};
   const SceneRun run = run_scene(
       s, limits, [&] { return vv.start(s, force); },
       [&](std::int64_t step) {

@@ -153,9 +153,11 @@ TEST(CliSimulate, TinyWaterRunGivesTheIssuesJson) {
   EXPECT_EQ(j.at("feed"), "halves");
   const std::set<std::string> timings = {
       "force_s", "list_builds", "ns_per_number", "ns_per_zeta", "particle_steps_per_s", "per_step_s",
-      "production_particle_steps_per_s", "production_s", "random_numbers", "rng_share_estimate", "threads",
-      "total_s", "zetas"};
+      "production_particle_steps_per_s", "production_s", "random_numbers", "rng_share_estimate", "team",
+      "threads", "total_s", "zetas"};
   EXPECT_EQ(keys(j.at("timings")), timings);
+  // 64 beads run on one thread: every one of the 20 steps on a team of one, no move.
+  EXPECT_EQ(j.at("timings").at("team"), (nlohmann::json{{"moves", 0}, {"steps", {{"1", 20}}}}));
   EXPECT_EQ(keys(j.at("temperature")),
             (std::set<std::string>{"mean", "std", "sem", "sem_dof", "std_sem", "std_sem_dof", "n"}));
 }

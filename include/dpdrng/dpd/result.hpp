@@ -1,5 +1,4 @@
 #pragma once
-#include <cmath>
 // What a DPD run returns: status, observables (means with spread and block-average standard errors),
 // distributions, timings and the taps for the statistical tests. A run that blows up is data, not a crash:
 // status says "unstable at step k: reason" and the observables cover the steps done.
@@ -7,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <iosfwd>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
@@ -100,6 +100,9 @@ struct Timings {
   double rng_share_estimate = 0;
   std::uint64_t list_builds = 0;
   int threads = 1;
+  // The steps run with each team size: a TeamGovernor runs fewer than `threads` while that is faster.
+  std::map<int, std::int64_t> steps_by_team;
+  std::int64_t team_moves = 0;
 };
 
 struct Series {

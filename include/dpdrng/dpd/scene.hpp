@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <string>
 
 #include "dpdrng/dpd/pair_forces.hpp"
@@ -34,6 +35,7 @@ struct SceneLimits {
   std::int64_t steps = 0, equilibrate = 0;
   double kT = 1.0, max_temperature = 100.0, min_distance = 1e-5;
   double rc = 1.0;  // the pair loop's cut-off: pairs beyond it are not seen by the min_distance guard
+  int threads = 1;  // the run's team; a TeamGovernor picks each step's from it and the times of the steps before
 };
 
 // What the loop computes at the end of every step, for the guards and the observers.
@@ -71,6 +73,8 @@ struct SceneRun {
   double momentum_drift = 0;  // max over steps of |P(t) − P(0)|, per bead
   std::array<double, 3> momentum_initial{}, momentum_final{};  // after the first force evaluation; at the end
   double total_s = 0, production_s = 0;
+  std::map<int, std::int64_t> steps_by_team;  // steps run with each team size (TeamGovernor)
+  std::int64_t team_moves = 0;
 };
 
 // `start` makes the first force evaluation; `advance(k)` moves the state through step k and returns its forces.

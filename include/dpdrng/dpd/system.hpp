@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "dpdrng/dpd/team.hpp"
+
 namespace dpdrng::dpd {
 
 struct Box {
@@ -30,15 +32,6 @@ struct Share {
   std::size_t lo, hi;
 };
 inline Share team_share(std::size_t n, std::size_t t, std::size_t nt) { return {n * t / nt, n * (t + 1) / nt}; }
-
-// Below this many beads a run keeps to one thread. A step of the paper's 256-bead fluid takes ~0.15 ms; each of
-// its parallel regions has to wake a team-mate, which costs tens of microseconds on an idle core and a
-// scheduler's time slice (milliseconds) once another process holds that core. Results do not depend on the
-// team, so the choice costs nothing but speed.
-inline constexpr std::size_t kTeamBeads = 1024;
-
-// The threads a run of `beads` beads uses: `requested` (0: OpenMP's default), or 1 under `team_beads`.
-int team_threads(int requested, std::size_t beads, std::size_t team_beads = kTeamBeads);
 
 struct System {
   Box box;
