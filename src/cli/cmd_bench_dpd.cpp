@@ -237,24 +237,34 @@ struct Oversubscribed {
   Measured one, two;
   double ratio = 0;  // median over the pairs of t(2 threads) / t(1 thread)
   std::vector<double> ratios;
+  double one_thread_share = 0;  // median over the two-thread runs of the share of steps run on one thread
 };
+
+// The share of a run's steps that its team governor ran on one thread.
+double one_thread_share(const dpd::Timings& t) {
+  std::int64_t all = 0;
+  for (const auto& [team, steps] : t.steps_by_team) all += steps;
+  const auto one = t.steps_by_team.find(1);
+  return all > 0 && one != t.steps_by_team.end() ? double(one->second) / double(all) : 0.0;
+}
 
 Oversubscribed measure_oversubscribed(const std::string& scene, Case k, int repeat) {
   Case k2 = k;
   k.cfg.threads = 1, k2.cfg.threads = 2;
   Oversubscribed out;
   out.scene = scene;
-  std::vector<double> t1, t2;
+  std::vector<double> t1, t2, shares;
   const BusyLoop busy;
   for (int r = 0; r < repeat; ++r) {
     progress("bench dpd: " + scene + " beside a busy loop, pair " + std::to_string(r + 1) + " of " +
              std::to_string(repeat));
     t1.push_back(run_once(k).production_s);
-    t2.push_back(run_once(k2).production_s);
+    const dpd::Timings two = run_once(k2);
+    t2.push_back(two.production_s), shares.push_back(one_thread_share(two));
     out.ratios.push_back(t2.back() / t1.back());
   }
   out.one = summarise(k, t1, 0), out.two = summarise(k2, t2, 0);
-  out.ratio = median(out.ratios);
+  out.ratio = median(out.ratios), out.one_thread_share = median(shares);
   return out;
 }
 
@@ -416,12 +426,14 @@ void print_oversubscription(const std::vector<Oversubscribed>& rows) {
               << o.one.median_s << " s, 2 threads asked (" << o.two.threads << " used) " << o.two.median_s
               << " s, ratio " << o.ratio << " (range "
               << *std::min_element(o.ratios.begin(), o.ratios.end()) << "-"
-              << *std::max_element(o.ratios.begin(), o.ratios.end()) << ")\n";
+              << *std::max_element(o.ratios.begin(), o.ratios.end()) << "), "
+              << std::fixed << std::setprecision(0) << 100 * o.one_thread_share << std::defaultfloat
+              << " % of the two-thread runs' steps on one\n";
 }
 
 nlohmann::json to_json(const Oversubscribed& o) {
   return {{"scene", o.scene}, {"one_thread", to_json(o.one)}, {"two_threads", to_json(o.two)},
-          {"ratio_2_to_1", o.ratio}, {"pair_ratios", o.ratios}};
+          {"ratio_2_to_1", o.ratio}, {"pair_ratios", o.ratios}, {"one_thread_step_share", o.one_thread_share}};
 }
 
 // Each integrator's production step against GW-MVV's, on each --pairs scene with tea32(1) (pnhln draws no pair

@@ -65,21 +65,25 @@ double TeamGovernor::current_mean() const {
   return std::accumulate(recent_.begin(), recent_.end(), 0.0) / double(recent_.size());
 }
 
+// A team that took r times the current one's: its probe's kProbeSteps steps cost kProbeSteps·(r − 1) steps of
+// the current team's time, so waiting that over kBudget steps before probing it again keeps within the budget.
+std::int64_t TeamGovernor::wait_after(double r) {
+  const double wait = std::ceil(double(kProbeSteps) * std::max(r - 1, 0.0) / kBudget);
+  return std::clamp<std::int64_t>(std::int64_t(std::min(wait, double(kMaxInterval))), kWindow, kMaxInterval);
+}
+
 void TeamGovernor::finish_probe() {
   probing_ = false;
   const double probe = std::accumulate(probe_.begin(), probe_.end(), 0.0) / double(probe_.size());
   const double current = current_mean();
   if (probe < current * (1 - kMargin)) {
+    // The team left behind is the one a next probe is likeliest to go back to: wait as for its ratio.
     rung_ = probe_rung_, ++moves_;
     recent_ = probe_, next_ = recent_.size() % kWindow;
-    until_probe_ = kWindow;
+    until_probe_ = wait_after(current / probe);
     return;
   }
-  // The probed team took r times as long: a probe's kProbeSteps steps cost kProbeSteps·(r − 1) steps of the
-  // current team's time, so waiting that over kBudget steps keeps probing within the budget.
-  const double r = current > 0 ? probe / current : 1.0;
-  const double wait = std::ceil(double(kProbeSteps) * std::max(r - 1, 0.0) / kBudget);
-  until_probe_ = std::clamp<std::int64_t>(std::int64_t(std::min(wait, double(kMaxInterval))), kWindow, kMaxInterval);
+  until_probe_ = wait_after(current > 0 ? probe / current : 1.0);
 }
 
 }  // namespace dpdrng::dpd

@@ -36,6 +36,25 @@ TEST(CliBenchDpd, ScalingOnlyReportsEveryPairAndTheSideBySideRuns) {
   EXPECT_EQ(j["scaling_side_by_side_2_copies"].get<double>(), 0.5 * (a + b));
 }
 
+// Beside a busy loop: the three scenes, each pair's ratio, and the share of the two-thread runs' steps that their
+// team governor ran on one thread. The 256-bead scene runs on one thread whatever is asked, so all its steps do.
+TEST(CliBenchDpd, OversubscribedReportsTheStepsRunOnOneThread) {
+  const Result r = run("bench dpd --oversubscribe --repeat 2 --steps-all 20 --steps-cells 5 --particles-cells 3000 "
+                       "--json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["oversubscribed"].size(), 3u);
+  for (const auto& o : j["oversubscribed"]) {
+    ASSERT_EQ(o["pair_ratios"].size(), 2u) << o;
+    const double share = o["one_thread_step_share"];
+    EXPECT_GE(share, 0.0) << o;
+    EXPECT_LE(share, 1.0) << o;
+  }
+  EXPECT_EQ(j["oversubscribed"][0]["two_threads"]["threads"], 1);
+  EXPECT_EQ(j["oversubscribed"][0]["one_thread_step_share"], 1.0);
+  EXPECT_EQ(j["oversubscribed"][1]["two_threads"]["threads"], 2);  // the team forced
+}
+
 // Shardlow's coloured sweep at one and two threads: both runs reported with their pairs inside r_c per second.
 TEST(CliBenchDpd, ScalingTimesShardlow) {
   const Result r = run("bench dpd --scaling-only --integrator shardlow --repeat 1 --steps-cells 5 "

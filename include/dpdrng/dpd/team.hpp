@@ -40,7 +40,8 @@ class TeamCap {
 // one thread; on a quiet machine the whole team is fastest. The governor runs the current team, times it, and now
 // and then probes a neighbouring rung of the ladder threads, threads/2, …, 1 for a few steps; it moves when the
 // probe is faster by more than kMargin. A probe of a slower team costs its excess time, so the next probe waits
-// long enough that probing stays within kBudget of the run's time.
+// long enough that probing stays within kBudget of the run's time (after a move, as long as going back to the
+// team it left would cost).
 class TeamGovernor {
  public:
   static constexpr int kWindow = 8;        // steps of the current team that a probe is compared with
@@ -62,6 +63,7 @@ class TeamGovernor {
   void start_probe();
   void finish_probe();
   double current_mean() const;
+  static std::int64_t wait_after(double r);  // steps before the next probe of a team r times as slow
 
   std::vector<int> rungs_;  // threads, threads/2, …, 1 (distinct)
   std::size_t rung_ = 0, probe_rung_ = 0;
