@@ -172,6 +172,11 @@ void report(const std::string& dir, bool charts, const std::string& calibration)
               << "): left out of the report; `study run` computes it again\n";
     o.unreadable.push_back(u.file.filename().string());
   }
+  // A folder without its cells (a clone's committed results keep the report, not the raw store) would get an
+  // empty report written over the one it has.
+  if (cells.empty() && unreadable.empty())
+    throw InputError("study report " + dir + ": no cells to report (neither study.h5 nor cells/ holds any); " +
+                     "`dpdrng study run` computes them. Nothing was written.");
   const fs::path md = write_report(config, cells, store.dir(), o);
   std::cout << md.string() << "\n";
 }

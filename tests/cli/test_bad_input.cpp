@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <random>
 #include <string>
@@ -273,6 +274,14 @@ TEST(BadInput, StudyRunThreadsAndOut) {
   std::ofstream(dir + "/report") << "a file where the report directory goes";
   expect_bad("study report " + dir, "report directory " + dir + "/report: exists and is not a directory");
   EXPECT_FALSE(fs::exists(dir + "/study.h5"));
+  // A folder of results without its cells, as committed results are kept: the report it has stays as it is.
+  fs::remove(dir + "/report");
+  fs::create_directories(dir + "/report");
+  std::ofstream(dir + "/report/report.md") << "the committed report";
+  expect_bad("study report " + dir, "no cells to report");
+  std::ifstream md(dir + "/report/report.md");
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(md), {}), "the committed report");
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir + "/report"), fs::directory_iterator{}), 1);
   fs::remove_all(dir);
 }
 
