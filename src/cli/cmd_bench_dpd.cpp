@@ -159,10 +159,19 @@ Measured measure(const Case& k, int repeat) {
 // independent one-thread copies of the run side by side, which share no data and never wait for each other:
 // 2 t₁ / (the later copy's time) is what the two cores give two independent runs at that moment. It is a
 // reference, not a bound: the copies hold twice the data of one run in the shared cache.
+// The share of a run's steps that its team governor ran on one thread.
+double one_thread_share(const dpd::Timings& t) {
+  std::int64_t all = 0;
+  for (const auto& [team, steps] : t.steps_by_team) all += steps;
+  const auto one = t.steps_by_team.find(1);
+  return all > 0 && one != t.steps_by_team.end() ? double(one->second) / double(all) : 0.0;
+}
+
 struct Scaling {
   Measured one, two;
   double speedup = 0, machine = 0;
   std::vector<double> ratios, machine_ratios;
+  double one_thread_share = 0;  // median over the two-thread runs of the share of steps run on one thread
 };
 
 double side_by_side(const Case& k) {
@@ -189,21 +198,22 @@ double side_by_side(const Case& k) {
 Scaling measure_scaling(Case k, int repeat) {
   Case k2 = k;
   k.cfg.threads = 1, k2.cfg.threads = 2;
-  std::vector<double> t1, t2;
+  std::vector<double> t1, t2, shares;
   Scaling out;
   dpd::Timings one;
   for (int r = 0; r < repeat; ++r) {
     progress("bench dpd: cells scaling, pair " + std::to_string(r + 1) + " of " + std::to_string(repeat));
     one = run_once(k);
     t1.push_back(one.production_s);
-    t2.push_back(run_once(k2).production_s);
+    const dpd::Timings two = run_once(k2);
+    t2.push_back(two.production_s), shares.push_back(one_thread_share(two));
     out.ratios.push_back(t1.back() / t2.back());
     out.machine_ratios.push_back(2 * t1.back() / side_by_side(k));
   }
   const double pairs_per_step = pair_cost(one, k.cfg, 1).pairs_per_step;
   out.one = summarise(k, t1, 0, pairs_per_step), out.two = summarise(k2, t2, 0, pairs_per_step);
   out.one.cost = pair_cost(one, k.cfg, out.one.median_s), out.two.cost = pair_cost(one, k2.cfg, out.two.median_s);
-  out.speedup = median(out.ratios), out.machine = median(out.machine_ratios);
+  out.speedup = median(out.ratios), out.machine = median(out.machine_ratios), out.one_thread_share = median(shares);
   return out;
 }
 
@@ -239,14 +249,6 @@ struct Oversubscribed {
   std::vector<double> ratios;
   double one_thread_share = 0;  // median over the two-thread runs of the share of steps run on one thread
 };
-
-// The share of a run's steps that its team governor ran on one thread.
-double one_thread_share(const dpd::Timings& t) {
-  std::int64_t all = 0;
-  for (const auto& [team, steps] : t.steps_by_team) all += steps;
-  const auto one = t.steps_by_team.find(1);
-  return all > 0 && one != t.steps_by_team.end() ? double(one->second) / double(all) : 0.0;
-}
 
 Oversubscribed measure_oversubscribed(const std::string& scene, Case k, int repeat) {
   Case k2 = k;
@@ -394,8 +396,9 @@ void print_scaling(const BenchDpdArgs& a, const Scaling& sc) {
   std::cout << std::setprecision(3) << "\ncells, " << sc.one.particles << " beads, tea32(1), integrator "
             << a.integrator << ", one and two threads alternately, " << sc.ratios.size() << " pairs: 1 thread "
             << sc.one.particle_steps_per_s << " p-steps/s = " << sc.one.pair_steps_per_s << " pair-steps/s, 2 threads "
-            << sc.two.particle_steps_per_s << " p-steps/s = " << sc.two.pair_steps_per_s
-            << " pair-steps/s (medians); " << sc.one.cost.ns_per_pair << " ns per pair inside r_c on 1 thread, "
+            << sc.two.particle_steps_per_s << " p-steps/s = " << sc.two.pair_steps_per_s << " pair-steps/s ("
+            << std::fixed << std::setprecision(0) << 100 * sc.one_thread_share << std::defaultfloat
+            << std::setprecision(3) << " % of their steps on one thread; medians); " << sc.one.cost.ns_per_pair << " ns per pair inside r_c on 1 thread, "
             << sc.two.cost.ns_per_pair << " on 2, " << sc.one.cost.candidates_per_pair
             << " candidates visited per pair kept; speed-up "
             << sc.speedup << "x (median of the pairs' ratios; range " << range(sc.ratios) << ")\n"
@@ -644,6 +647,7 @@ void run_bench_dpd(const BenchDpdArgs& a) {
       out["scaling_pair_ratios"] = scaling->ratios;
       out["scaling_side_by_side_2_copies"] = scaling->machine;
       out["scaling_side_by_side_ratios"] = scaling->machine_ratios;
+      out["scaling_two_thread_runs_one_thread_step_share"] = scaling->one_thread_share;
     }
     std::cout << out.dump(2) << "\n";
     return;

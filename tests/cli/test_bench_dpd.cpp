@@ -31,6 +31,10 @@ TEST(CliBenchDpd, ScalingOnlyReportsEveryPairAndTheSideBySideRuns) {
     EXPECT_LT(m["candidates_per_pair"].get<double>(), 8.0) << m;
     EXPECT_GT(m["ns_per_pair"].get<double>(), 0.0) << m;
   }
+  // The governor's probes of one thread: a share of the two-thread runs' steps, never all of them.
+  const double share = j["scaling_two_thread_runs_one_thread_step_share"];
+  EXPECT_GE(share, 0.0);
+  EXPECT_LT(share, 1.0);
   // The median of two pairs' ratios is their mean.
   const double a = j["scaling_side_by_side_ratios"][0], b = j["scaling_side_by_side_ratios"][1];
   EXPECT_EQ(j["scaling_side_by_side_2_copies"].get<double>(), 0.5 * (a + b));
