@@ -1,7 +1,5 @@
 #include "dpdrng/study/runner.hpp"
 
-#include <malloc.h>
-
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -9,6 +7,10 @@
 #include <mutex>
 #include <ostream>
 #include <thread>
+
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 namespace dpdrng::study {
 
