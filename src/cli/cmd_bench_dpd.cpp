@@ -398,7 +398,8 @@ void print_scaling(const BenchDpdArgs& a, const Scaling& sc) {
             << sc.one.particle_steps_per_s << " p-steps/s = " << sc.one.pair_steps_per_s << " pair-steps/s, 2 threads "
             << sc.two.particle_steps_per_s << " p-steps/s = " << sc.two.pair_steps_per_s << " pair-steps/s ("
             << std::fixed << std::setprecision(0) << 100 * sc.one_thread_share << std::defaultfloat
-            << std::setprecision(3) << " % of their steps on one thread; medians); " << sc.one.cost.ns_per_pair << " ns per pair inside r_c on 1 thread, "
+            << std::setprecision(3) << " % of their steps on one thread; medians); " << sc.one.cost.ns_per_pair
+            << " ns per pair inside r_c on 1 thread, "
             << sc.two.cost.ns_per_pair << " on 2, " << sc.one.cost.candidates_per_pair
             << " candidates visited per pair kept; speed-up "
             << sc.speedup << "x (median of the pairs' ratios; range " << range(sc.ratios) << ")\n"
