@@ -70,14 +70,15 @@ class NoiseKernelOf final : public NoiseKernel {
     Scratch& sc = scratch(thread, k);
     if constexpr (kBatched) return pairs_batched(b, sc);
     Block* blk = sc.blk.data();
+    auto slot = [&b](std::size_t t) { return b.slots ? b.slots[t] : b.slot + t; };
     for (std::size_t t = 0; t < k; ++t) {
       const rng::PairInput p{b.i[t], b.j[t], b.dx[t], b.dy[t], b.dz[t], b.step};
-      blk[t] = noise_.raw(rng::canonical(p), b.slot + t);
+      blk[t] = noise_.raw(rng::canonical(p), slot(t));
     }
     if (noise_.feed() == rng::Feed::blocks)
       for (std::size_t t = 0; t < k; ++t) {
         const rng::PairInput p{b.i[t], b.j[t], b.dx[t], b.dy[t], b.dz[t], b.step};
-        sc.blk2[t] = noise_.raw2(rng::canonical(p), b.slot + t);
+        sc.blk2[t] = noise_.raw2(rng::canonical(p), slot(t));
       }
     noise_.zetas(blk, sc.blk2.data(), b.zeta, k);
     if (b.tap[0])

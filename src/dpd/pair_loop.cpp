@@ -190,6 +190,7 @@ class PairLoop final : public PairForces {
     std::vector<double> dx, dy, dz, r2;
     std::vector<std::uint32_t> j, ids, pi, counts;
     std::vector<std::uint32_t> own;  // cells: the pairs' own beads' sorted indices
+    std::vector<std::size_t> slots;  // all pairs under the stream: the pairs' slots
     std::vector<double> zeta;
     std::vector<double> gx, gy, gz, cw, w;  // cells: the pairs' terms (pair_terms)
     std::vector<std::uint64_t> tap[2];  // cells: a layer's tapped words
@@ -200,7 +201,7 @@ class PairLoop final : public PairForces {
       if (dx.size() >= n) return;
       n = std::max(n, 2 * dx.size());
       dx.resize(n), dy.resize(n), dz.resize(n), r2.resize(n), j.resize(n), ids.resize(n), pi.resize(n);
-      zeta.resize(n), own.resize(n);
+      zeta.resize(n), own.resize(n), slots.resize(n);
       gx.resize(n), gy.resize(n), gz.resize(n), cw.resize(n), w.resize(n);
     }
     pair_filter::Out out() { return {dx.data(), dy.data(), dz.data(), r2.data(), j.data()}; }
@@ -234,13 +235,13 @@ class PairLoop final : public PairForces {
     bool in_tap;  // record the pairs inside r_c (Taps::in_range)
   };
 
-  // Rows in groups of kGroup, a group's hashed noise drawn in one batch (row_group).
+  // Rows in groups of kGroup, a group's noise drawn in one batch (row_group).
   static constexpr std::size_t kGroup = 16;
 
   template <bool Zero>
   void all_rows(const Ctx& c) {
     const std::size_t n = c.s.size(), groups = (n + kGroup - 1) / kGroup;
-    const bool batched = !noise_->stream() && !c.tap;
+    const bool batched = !c.tap;
     if (batched) round_positions(c.s);
 #pragma omp parallel for num_threads(team_size(threads_)) schedule(dynamic, 1)
     for (std::size_t g = 0; g < groups; ++g) {
@@ -273,9 +274,10 @@ class PairLoop final : public PairForces {
             threshold_f_};
   }
 
-  // Rows [i0, i1) under a hash: each row's pairs inside r_c collected one row after another, their ζ in one
-  // batch (a row holds ~6 such pairs in the paper's fluid: too few for the vectorised hash and Box–Muller),
-  // then each row's forces. A hash's block is a function of the pair alone, so the grouping changes no number.
+  // Rows [i0, i1) on a step without a tap of every pair's words: each row's pairs inside r_c collected one row
+  // after another, their ζ in one batch (a row holds ~6 such pairs in the paper's fluid: too few for the
+  // vectorised hash and Box–Muller), then each row's forces. A hash's block is a function of the pair alone and
+  // the stream's is its slot's (passed per pair), so the grouping changes no number.
   // Zero (the ζ = 0 baseline): the same path without the noise, so that the two differ by the noise alone.
   template <bool Zero>
   void row_group(const Ctx& c, std::uint32_t i0, std::uint32_t i1, int thread) {
@@ -283,6 +285,7 @@ class PairLoop final : public PairForces {
     const System& s = c.s;
     const std::size_t n = s.size();
     const double rc2 = k_.rc2();
+    const bool stream = !Zero && noise_->stream();
     sc.counts.clear();
     std::size_t off = 0;
     for (std::uint32_t i = i0; i < i1; ++i) {
@@ -294,12 +297,14 @@ class PairLoop final : public PairForces {
                                                         i + 1, std::uint32_t(n), ctr, sc.list_room(), sc.out(),
                                                         off) - off;
       std::fill_n(sc.pi.data() + off, k, i);
+      if (stream) row_slots(i, n, sc.j.data() + off, k, sc.slots.data() + off);
       sc.counts.push_back(std::uint32_t(k));
       off += k;
     }
     if constexpr (!Zero) {
       const PairBatch b{sc.pi.data(), sc.j.data(), off, sc.dx.data(), sc.dy.data(), sc.dz.data(), c.step, 0,
-                        {nullptr, nullptr}, sc.zeta.data(), c.in_tap ? used_room(sc, off) : nullptr};
+                        {nullptr, nullptr}, sc.zeta.data(), c.in_tap ? used_room(sc, off) : nullptr,
+                        stream ? sc.slots.data() : nullptr};
       noise_->pairs(b, thread);
     }
     // One bead type and no configurational sums: the group's pair terms in one vectorised pass, then each
@@ -414,8 +419,15 @@ class PairLoop final : public PairForces {
     row.min_r2 = min_r2;
   }
 
-  // Row i under a stream or on a tapped step (never the ζ = 0 baseline, which has neither): every pair's
-  // geometry, then the noise kernel keeps those inside r_c (NoiseKernel::row).
+  // The slots of row i's k partners j (pair_slot), restrict so that the loop vectorises.
+  static void row_slots(std::uint32_t i, std::size_t n, const std::uint32_t* __restrict j, std::size_t k,
+                        std::size_t* __restrict out) {
+    const std::size_t before = pair_slot(i, i + 1, n) - i - 1;
+    for (std::size_t t = 0; t < k; ++t) out[t] = before + j[t];
+  }
+
+  // Row i on a step that taps every pair's words (never the ζ = 0 baseline): every pair's geometry, then the
+  // noise kernel keeps those inside r_c (NoiseKernel::row).
   void row_all(const Ctx& c, std::uint32_t i, int thread) {
     Scratch& sc = scratch_[std::size_t(thread)];
     const System& s = c.s;

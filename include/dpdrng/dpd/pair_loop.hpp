@@ -111,6 +111,7 @@ struct PairBatch {
   std::uint64_t* tap[2];  // non-null: the pairs' words go to tap[w][t]
   double* zeta;           // out: ζ of the k pairs
   std::uint64_t* used;    // non-null: the words ζ came from (NoiseKernel::used_words), pair after pair
+  const std::size_t* slots = nullptr;  // non-null: pair t's slot is slots[t], not slot + t
 };
 
 // The per-noise part of the pair loop: generator, seeding and distribution inline here, in one batch call.
