@@ -15,6 +15,7 @@
 #include "dpdrng/common/machine.hpp"
 #include "dpdrng/rng/stream.hpp"
 #include "dpdrng/stats/nist/battery.hpp"
+#include "dpdrng/stats/nist/tests.hpp"
 
 namespace dpdrng::cli {
 namespace cmd_bench_nist {
@@ -27,6 +28,7 @@ struct BenchArgs {
   int sequences = 100;
   std::size_t bits = std::size_t{1} << 20;
   bool json = false;
+  bool fft_wisdom = false;
 };
 
 struct Clock {
@@ -57,6 +59,10 @@ void run_bench(const BenchArgs& a) {
   if (a.bits < 64 || a.bits % 64 != 0) throw InputError("--bits must be a positive multiple of 64");
   a.gen.spec();  // a bad generator is refused before any sequence is made
   begin_work();
+  if (a.fft_wisdom) {
+    std::cout << nist::fft_patient_wisdom(a.bits);
+    return;
+  }
   const auto seqs = make_sequences(a);
   nlohmann::json rows = nlohmann::json::array();
   double cpu_sum = 0;
@@ -79,6 +85,7 @@ void run_bench(const BenchArgs& a) {
                       {"threads", omp_get_max_threads()},
                       {"cpu_model", cpu_model()},
                       {"simd_width_bits", simd_width_bits()},
+                      {"fft_plan", nist::fft_plan(a.bits)},
                       {"tests", rows},
                       {"sum_cpu_s", cpu_sum},
                       {"battery", {{"cpu_s", b1.cpu - b0.cpu}, {"wall_s", b1.wall - b0.wall}}}};
@@ -89,6 +96,7 @@ void run_bench(const BenchArgs& a) {
   std::printf("SP800-22 battery, %d sequences of %zu bits (%s), %d threads\n%s, %d-bit SIMD (%s)\n", a.sequences,
               a.bits, rng::describe(a.gen.spec()).c_str(), omp_get_max_threads(), cpu_model().c_str(),
               simd_width_bits(), simd_name());
+  std::printf("FFT plan: %s\n", nist::fft_plan(a.bits).c_str());
   std::printf("%-26s %10s %10s\n", "test", "CPU s", "wall s");
   for (const auto& r : rows)
     std::printf("%-26s %10.3f %10.3f\n", r["test"].get<std::string>().c_str(), r["cpu_s"].get<double>(),
@@ -106,6 +114,9 @@ const bool registered = register_command(45, [](CLI::App& root) {
   add_integer(*sub, "--sequences,-k", args->sequences, "number of sequences", {1, 1'000'000});
   add_integer(*sub, "--bits", args->bits, "bits per sequence (a multiple of 64)", {64, std::uint64_t{1} << 34});
   sub->add_flag("--json", args->json, "machine-readable output");
+  sub->add_flag("--fft-wisdom", args->fft_wisdom,
+                "plan the spectral test's transform of --bits bits with FFTW_PATIENT (about a minute at 2^20) and "
+                "print FFTW's wisdom for it (what src/stats/nist/fft_wisdom.cpp ships), instead of the benchmark");
   sub->callback([args] { run_bench(*args); });
 });
 

@@ -26,8 +26,9 @@ BitSequence random_bits(std::size_t n, unsigned seed) {
   return BitSequence::from_bits(bits);
 }
 
-// |X_k|, k < n/2, from GSL's mixed-radix real transform (FFTPACK's halfcomplex layout r0 r1 i1 r2 i2 ...).
-std::vector<double> gsl_magnitudes(const BitSequence& s) {
+// X_k, k < n/2, re and im interleaved, from GSL's mixed-radix real transform (FFTPACK's halfcomplex layout
+// r0 r1 i1 r2 i2 ...).
+std::vector<double> gsl_transform(const BitSequence& s) {
   const std::size_t n = s.size();
   std::vector<double> x(n);
   for (std::size_t i = 0; i < n; ++i) x[i] = s[i] ? 1.0 : -1.0;
@@ -37,26 +38,23 @@ std::vector<double> gsl_magnitudes(const BitSequence& s) {
   gsl_fft_real_workspace_free(work);
   gsl_fft_real_wavetable_free(table);
   EXPECT_EQ(status, 0);
-  std::vector<double> mag(n / 2);
-  if (!mag.empty()) mag[0] = std::fabs(x[0]);
-  for (std::size_t k = 1; k < mag.size(); ++k) mag[k] = std::hypot(x[2 * k - 1], x[2 * k]);
+  std::vector<double> X(2 * (n / 2), 0.0);
+  if (!X.empty()) X[0] = x[0];
+  for (std::size_t k = 1; k < n / 2; ++k) X[2 * k] = x[2 * k - 1], X[2 * k + 1] = x[2 * k];
+  return X;
+}
+
+std::vector<double> gsl_magnitudes(const BitSequence& s) {
+  const std::vector<double> X = gsl_transform(s);
+  std::vector<double> mag(X.size() / 2);
+  for (std::size_t k = 0; k < mag.size(); ++k) mag[k] = std::hypot(X[2 * k], X[2 * k + 1]);
   return mag;
 }
 
-// |X_k|, k < n/2, summed term by term in long double.
+// |X_k|, k < n/2, summed term by term (direct_modulus, itself checked against GSL below).
 std::vector<double> direct_magnitudes(const BitSequence& s) {
-  const std::size_t n = s.size();
-  std::vector<double> mag(n / 2);
-  for (std::size_t k = 0; k < mag.size(); ++k) {
-    long double re = 0, im = 0;
-    for (std::size_t j = 0; j < n; ++j) {
-      const long double a = -2 * std::numbers::pi_v<long double> * static_cast<long double>((j * k) % n) / n;
-      const long double x = s[j] ? 1 : -1;
-      re += x * std::cos(a);
-      im += x * std::sin(a);
-    }
-    mag[k] = static_cast<double>(std::hypot(re, im));
-  }
+  std::vector<double> mag(s.size() / 2);
+  for (std::size_t k = 0; k < mag.size(); ++k) mag[k] = direct_modulus(s, k);
   return mag;
 }
 
@@ -85,6 +83,41 @@ TEST(FftInternals, MagnitudesAgreeWithADirectDft) {
     dft_magnitudes(s, mag);
     expect_same_magnitudes(mag, direct_magnitudes(s), n);
   }
+}
+
+TEST(FftInternals, TheDirectModulusAgreesWithGsl) {
+  for (std::size_t n : {std::size_t{4096}, std::size_t{1000}, std::size_t{3}}) {
+    const BitSequence s = random_bits(n, static_cast<unsigned>(2000 + n));
+    const std::vector<double> want = gsl_magnitudes(s);
+    for (std::size_t k = 0; k < want.size(); k += 1 + want.size() / 40)
+      EXPECT_NEAR(direct_modulus(s, k), want[k], 1e-9 * std::sqrt(static_cast<double>(n))) << "n=" << n << " k=" << k;
+  }
+  EXPECT_THROW(direct_modulus(random_bits(8, 1), 8), std::invalid_argument);
+}
+
+// A transform off by less than the band gives the count of the exact moduli: here GSL's transform with the modulus
+// nearest the threshold pushed to the other side of it, by as much as it lay from it.
+TEST(FftInternals, ModuliInsideTheBandAreCountedOnTheDirectSum) {
+  const std::size_t n = 4096;
+  const BitSequence s = random_bits(n, 77);
+  std::vector<double> X = gsl_transform(s);
+  const std::vector<double> mag = gsl_magnitudes(s);
+  const double T = std::sqrt(2.995732274 * static_cast<double>(n));
+  std::size_t nearest = 0, truth = 0;
+  for (std::size_t k = 0; k < mag.size(); ++k) {
+    truth += mag[k] < T;
+    if (std::fabs(mag[k] - T) < std::fabs(mag[nearest] - T)) nearest = k;
+  }
+  const double gap = std::fabs(mag[nearest] - T);
+  ASSERT_GT(gap, 0.0);
+  const double scale = (2 * T - mag[nearest]) / mag[nearest];
+  X[2 * nearest] *= scale, X[2 * nearest + 1] *= scale;
+  EXPECT_EQ(spectral_peaks_below(s, X.data(), T, 2 * gap), truth);
+  // Without a band the pushed modulus is counted where the transform put it.
+  const std::size_t moved = mag[nearest] < T ? truth - 1 : truth + 1;
+  EXPECT_EQ(spectral_peaks_below(s, X.data(), T, 0.0), moved);
+  // At 2^20 bits the band is a hundred times the bound on a double-precision FFT's error (c = 5 in Higham's).
+  EXPECT_NEAR(spectral_band(std::size_t{1} << 20) / (5 * 20 * 0x1p-53 * 0x1p20), 100.0, 5.0);
 }
 
 // The test compares squared moduli with the smallest square whose root reaches the threshold: the same count as

@@ -9,6 +9,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "dpdrng/stats/nist/bitseq.hpp"
@@ -45,6 +46,21 @@ int binary_rank32(std::array<std::uint32_t, 32> rows);
 TestResult fft(const BitSequence& s);
 // The moduli |X_0| .. |X_{n/2-1}| of the DFT of x_i = 2 s_i - 1 (what the test counts), into mag.
 void dft_magnitudes(const BitSequence& s, std::vector<double>& mag);
+// The test's N1 from a transform X of s (X_0 .. X_{n/2-1}, re and im interleaved): the moduli below T, where
+// those within `band` of T are recomputed term by term (direct_modulus). While the transform's error stays under
+// the band, the count is the same whatever plan, SIMD or library computed X.
+std::size_t spectral_peaks_below(const BitSequence& s, const double* X, double T, double band);
+// |X_k| of the DFT of x_i = 2 s_i - 1, k < n, summed term by term in long double: slow (a sine and a cosine a
+// bit), and its roundings depend on n and k alone.
+double direct_modulus(const BitSequence& s, std::size_t k);
+// The band spectral_peaks_below is given for n bits: far above a double-precision FFT's error.
+double spectral_band(std::size_t n);
+// How the test transforms n bits: "FFTW wisdom (FFTW_PATIENT)" where the shipped plan applies, else
+// "FFTW_ESTIMATE".
+std::string fft_plan(std::size_t n);
+// FFTW's wisdom for the test's transform of n bits, planned afresh with FFTW_PATIENT (about a minute at 2^20):
+// the text shipped in src/stats/nist/fft_wisdom.cpp.
+std::string fft_patient_wisdom(std::size_t n);
 
 // The aperiodic (unbordered) m-bit templates in increasing numeric order, first bit most significant: the
 // order of the reference's templates/template<m> files (148 templates for m = 9).
