@@ -1,14 +1,13 @@
 #pragma once
 // The pair loop, compiled once (pair_loop.cpp), around a per-noise kernel (noise_kernel.hpp) that it calls once
 // per batch of pairs: a group of rows (all mode) or a layer of cells (cells mode), never per pair.
-//   all:   row i does its partners j > i. Under a hash, sixteen rows collect their pairs inside r_c
+//   all:   row i does its partners j > i. Sixteen rows collect their pairs inside r_c
 //          (pair_filter::append_rounded: ~1 candidate in 20 is kept, so a single-precision test, 16 lanes,
 //          passes a superset, which is gathered and tested exactly), draw the noise of all of them in one
-//          batch (a hash's block depends on the pair alone, so the pairs outside r_c need none), compute the
-//          group's pair terms in one vectorised pass, then sum each row's forces in pair order. A stream, which
-//          owns a number per pair slot, and a tapped step, which records every pair's words, compute every
-//          pair's geometry (NoiseKernel::row); the stream then reads the slots of the pairs inside r_c only,
-//          the tap every pair's words. Reactions are added serially.
+//          batch (a hash's block depends on the pair alone and the stream's, which fills a number for every pair
+//          slot each step, on the pair's slot, so the pairs outside r_c need no ζ), compute the group's pair
+//          terms in one vectorised pass, then sum each row's forces in pair order. A tapped step, which records
+//          every pair's words, computes every pair's geometry (NoiseKernel::row). Reactions are added serially.
 //   cells: the beads are sorted by cell every step (neighbours.hpp) and copied into sorted arrays, both
 //          shared by the team (every sorted slot written once, so any team gives the same arrays); each cell
 //          does its own pairs and those with its 13 forward neighbours, writing both forces at once; a cell's

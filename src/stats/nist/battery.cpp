@@ -1,9 +1,11 @@
 #include "dpdrng/stats/nist/battery.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <optional>
 #include <stdexcept>
 
 #include "common.hpp"
@@ -19,7 +21,7 @@ std::vector<Test> all_tests() {
 
 namespace {
 
-TestResult dispatch(Test t, const BitSequence& s, const Parameters& p) {
+TestResult dispatch(Test t, const BitSequence& s, const Parameters& p, const PatternCounts* counts) {
   switch (t) {
     case Test::Frequency: return frequency(s);
     case Test::BlockFrequency: return block_frequency(s, p.block_frequency_M);
@@ -32,31 +34,46 @@ TestResult dispatch(Test t, const BitSequence& s, const Parameters& p) {
       return non_overlapping_template(s, p.non_overlapping_m, p.non_overlapping_templates, p.non_overlapping_blocks);
     case Test::OverlappingTemplate: return overlapping_template(s, p.overlapping_m, p.overlapping_M, p.overlapping_K);
     case Test::Universal: return universal(s, p.universal_L, p.universal_Q);
-    case Test::ApproximateEntropy: return approximate_entropy(s, p.approximate_entropy_m);
+    case Test::ApproximateEntropy: return approximate_entropy(s, p.approximate_entropy_m, counts);
     case Test::RandomExcursions: return random_excursions(s);
     case Test::RandomExcursionsVariant: return random_excursions_variant(s);
-    case Test::Serial: return serial(s, p.serial_m);
+    case Test::Serial: return serial(s, p.serial_m, counts);
     case Test::LinearComplexity: return linear_complexity(s, p.linear_complexity_M);
   }
   throw std::logic_error("unknown SP800-22 test");
 }
 
-}  // namespace
+// Serial and Approximate Entropy from one table of pattern counts (PatternCounts), when both run on a sequence
+// long enough for both, with valid parameters (an invalid one is the test's own error), and the larger table's
+// prefix sums (2^m additions) cost no more than counting the smaller one again (n).
+std::optional<PatternCounts> shared_counts(const BitSequence& s, const Parameters& p, std::span<const Test> tests) {
+  const auto has = [&tests](Test t) { return std::find(tests.begin(), tests.end(), t) != tests.end(); };
+  if (!has(Test::Serial) || !has(Test::ApproximateEntropy)) return std::nullopt;
+  if (check_serial(p.serial_m) || check_approximate_entropy(p.approximate_entropy_m)) return std::nullopt;
+  const int m = std::max(p.serial_m, p.approximate_entropy_m + 1);
+  if (s.size() < static_cast<std::size_t>(m) || (std::size_t{1} << m) > s.size()) return std::nullopt;
+  return pattern_counts(s, m);
+}
 
-TestResult run_test(Test t, const BitSequence& s, const Parameters& p) {
-  TestResult r = dispatch(t, s, p);
+TestResult run_test(Test t, const BitSequence& s, const Parameters& p, const PatternCounts* counts) {
+  TestResult r = dispatch(t, s, p, counts);
   // Outside SP800-22's length rules the statistic does not follow its reference distribution: no P-value.
   if (r.applicable)
     if (const auto why = check_length(t, p, s.size())) detail::not_applicable(r, why->reason, why->min_bits);
   return r;
 }
 
+}  // namespace
+
+TestResult run_test(Test t, const BitSequence& s, const Parameters& p) { return run_test(t, s, p, nullptr); }
+
 std::vector<TestResult> run_battery(const BitSequence& s, const Parameters& p, std::span<const Test> tests) {
   const std::vector<Test> all = all_tests();
   if (tests.empty()) tests = all;
+  const std::optional<PatternCounts> counts = shared_counts(s, p, tests);
   std::vector<TestResult> out;
   out.reserve(tests.size());
-  for (Test t : tests) out.push_back(run_test(t, s, p));
+  for (Test t : tests) out.push_back(run_test(t, s, p, counts ? &*counts : nullptr));
   return out;
 }
 

@@ -1,6 +1,8 @@
 // Serial and Approximate Entropy tests (SP800-22 2.11, 2.12): both count m-bit patterns around the circle.
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "common.hpp"
@@ -38,6 +40,15 @@ std::vector<std::uint32_t> prefix_counts(const std::vector<std::uint32_t>& count
   return out;
 }
 
+// The m-bit counts of s: from the given table of at least m bits, or counted.
+std::vector<std::uint32_t> counts_of(const BitSequence& s, int m, const PatternCounts* given) {
+  if (given == nullptr) return circular_counts(s, m);
+  if (given->m < m || given->counts.size() != std::size_t{1} << given->m)
+    throw std::invalid_argument("pattern counts of " + std::to_string(given->m) + " bits cannot give " +
+                                std::to_string(m) + "-bit ones");
+  return given->m == m ? given->counts : prefix_counts(given->counts, given->m, m);
+}
+
 double psi2(const std::vector<std::uint32_t>& counts, int m, std::size_t n) {
   if (m <= 0) return 0.0;
   std::uint64_t sum = 0;
@@ -55,6 +66,11 @@ double phi(const std::vector<std::uint32_t>& counts, std::size_t n) {
 
 }  // namespace
 
+PatternCounts pattern_counts(const BitSequence& s, int m) {
+  if (m < 1 || m > 24) throw std::invalid_argument("pattern counts: m must be within 1..24");
+  return {m, circular_counts(s, m)};
+}
+
 std::optional<ParameterProblem> check_serial(int m) {
   if (m < 2 || m > 24) return ParameterProblem{"serial_m", m, "must be within 2..24"};
   return std::nullopt;
@@ -65,14 +81,14 @@ std::optional<ParameterProblem> check_approximate_entropy(int m) {
   return std::nullopt;
 }
 
-TestResult serial(const BitSequence& s, int m) {
+TestResult serial(const BitSequence& s, int m, const PatternCounts* counts) {
   require_valid(check_serial(m));
   TestResult r = make(Test::Serial, s.size());
   r.values = {{"p1", NAN, NAN}, {"p2", NAN, NAN}};
   r.parameters = {{"m", m}};
   const std::size_t n = s.size();
   if (n < static_cast<std::size_t>(m)) return too_short(r, static_cast<std::size_t>(m), "one block of m bits");
-  const auto c0 = circular_counts(s, m);
+  const auto c0 = counts_of(s, m, counts);
   const double psim0 = psi2(c0, m, n);
   const double psim1 = psi2(prefix_counts(c0, m, m - 1), m - 1, n);
   const double psim2 = m >= 3 ? psi2(prefix_counts(c0, m, m - 2), m - 2, n) : 0.0;
@@ -85,13 +101,13 @@ TestResult serial(const BitSequence& s, int m) {
   return r;
 }
 
-TestResult approximate_entropy(const BitSequence& s, int m) {
+TestResult approximate_entropy(const BitSequence& s, int m, const PatternCounts* counts) {
   require_valid(check_approximate_entropy(m));
   TestResult r = make(Test::ApproximateEntropy, s.size());
   r.parameters = {{"m", m}};
   const std::size_t n = s.size();
   if (n < static_cast<std::size_t>(m) + 1) return too_short(r, static_cast<std::size_t>(m) + 1, "one block of m+1 bits");
-  const auto c1 = circular_counts(s, m + 1);
+  const auto c1 = counts_of(s, m + 1, counts);
   const double phi_m = m == 0 ? 0.0 : phi(prefix_counts(c1, m + 1, m), n);
   const double phi_m1 = phi(c1, n);
   const double apen = phi_m - phi_m1;

@@ -134,6 +134,31 @@ TEST(FftInternals, PeakCountIsTheModuliBelowTheThreshold) {
   }
 }
 
+// Serial and Approximate Entropy read the battery's one table of pattern counts where both run: the same results
+// as each test counting its own patterns, and the larger table's prefix sums are its counts.
+TEST(PatternCountsInternals, TheSharedTableGivesEachTestItsOwnCounts) {
+  // Lengths where SP800-22's rules admit both tests at their defaults (m = 16 needs n >= 2^19).
+  for (std::size_t n : {std::size_t{1} << 20, std::size_t{(1 << 19) + 12345}}) {
+    const BitSequence s = random_bits(n, static_cast<unsigned>(3000 + n));
+    using T = dpdrng::stats::nist::Test;
+    const std::vector<T> both = {T::Serial, T::ApproximateEntropy};
+    const std::vector<TestResult> got = run_battery(s, Parameters{}, both);
+    const TestResult alone[2] = {serial(s), approximate_entropy(s)};
+    for (int t = 0; t < 2; ++t) {
+      ASSERT_EQ(got[t].values.size(), alone[t].values.size());
+      for (std::size_t v = 0; v < alone[t].values.size(); ++v) {
+        EXPECT_EQ(got[t].values[v].statistic, alone[t].values[v].statistic) << "n=" << n;
+        EXPECT_EQ(got[t].values[v].p, alone[t].values[v].p) << "n=" << n;
+      }
+    }
+    const PatternCounts c16 = pattern_counts(s, 16), c11 = pattern_counts(s, 11);
+    const TestResult from16 = approximate_entropy(s, 10, &c16);
+    EXPECT_EQ(from16.values[0].p, approximate_entropy(s, 10, &c11).values[0].p);
+    EXPECT_EQ(from16.values[0].p, alone[1].values[0].p);
+    EXPECT_THROW(serial(s, 16, &c11), std::invalid_argument);
+  }
+}
+
 // SP800-22 2.7.4: slide a window over the block; on a match count it and move on m bits, otherwise one bit.
 std::size_t scan_count(const BitSequence& s, std::size_t start, std::size_t M, std::uint32_t t, int m) {
   std::size_t count = 0;

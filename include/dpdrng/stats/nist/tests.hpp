@@ -78,8 +78,18 @@ TestResult overlapping_template(const BitSequence& s, int m = 9, int M = 1032, i
 // reference". The variance table and Coron's c(L, K) correction as in the reference.
 TestResult universal(const BitSequence& s, int L = 0, int Q = 0);
 
-// 2.12  Circular (wrap-around) counting of m- and (m+1)-bit blocks, chi^2 = 2n(ln 2 - ApEn).
-TestResult approximate_entropy(const BitSequence& s, int m = 10);
+// The counts of every m-bit pattern at the n start positions of s read circularly (1 <= m <= 24), which Serial
+// (m) and Approximate Entropy (m + 1) are computed from. On a circle every k-bit window is the prefix of exactly
+// one m-bit window, so one table of the larger m gives both tests their counts.
+struct PatternCounts {
+  int m = 0;
+  std::vector<std::uint32_t> counts;  // [pattern], first bit most significant
+};
+PatternCounts pattern_counts(const BitSequence& s, int m);
+
+// 2.12  Circular (wrap-around) counting of m- and (m+1)-bit blocks, chi^2 = 2n(ln 2 - ApEn). `counts`, when given,
+// are s's pattern counts of at least m + 1 bits.
+TestResult approximate_entropy(const BitSequence& s, int m = 10, const PatternCounts* counts = nullptr);
 
 // 2.14  States -4..-1, 1..4; not applicable when the walk has fewer than max(500, 0.005 sqrt(n)) cycles.
 TestResult random_excursions(const BitSequence& s);
@@ -87,8 +97,9 @@ TestResult random_excursions(const BitSequence& s);
 // 2.15  States -9..-1, 1..9; same applicability rule.
 TestResult random_excursions_variant(const BitSequence& s);
 
-// 2.11  Circular counting, two P-values (del psi^2 and del^2 psi^2).
-TestResult serial(const BitSequence& s, int m = 16);
+// 2.11  Circular counting, two P-values (del psi^2 and del^2 psi^2). `counts`, when given, are s's pattern counts
+// of at least m bits.
+TestResult serial(const BitSequence& s, int m = 16, const PatternCounts* counts = nullptr);
 
 // 2.10  Blocks of M bits (default 500), Berlekamp-Massey per block, the reference's rounded class probabilities.
 TestResult linear_complexity(const BitSequence& s, int M = 500);
