@@ -9,7 +9,7 @@
 
 namespace dpdrng::study {
 
-void record_nist(const dpd::Taps& taps, const TapPlan& plan, const TestParams& tests, int, CellResult& out) {
+void record_nist(const dpd::Taps& taps, const TapPlan& plan, const TestParams& tests, int threads, CellResult& out) {
   std::vector<std::uint64_t> words;
   for (const auto& t : taps.raw) {
     if (!std::binary_search(plan.nist_steps.begin(), plan.nist_steps.end(), t.step)) continue;
@@ -29,7 +29,8 @@ void record_nist(const dpd::Taps& taps, const TapPlan& plan, const TestParams& t
   for (std::size_t s = 0; s < m; ++s)
     seqs.push_back(stats::nist::BitSequence::from_words_le(std::span(words).subspan(s * per_seq, per_seq)));
   words = {};
-  const auto results = stats::nist::run_battery(seqs);
+  // The cell's share of the study's threads: more would crowd the cells running beside it.
+  const auto results = stats::nist::run_battery(seqs, {}, {}, threads);
   seqs = {};
   const auto rows = stats::nist::assess(results, tests.alpha);
 

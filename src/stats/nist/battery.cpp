@@ -1,5 +1,7 @@
 #include "dpdrng/stats/nist/battery.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -78,13 +80,14 @@ std::vector<TestResult> run_battery(const BitSequence& s, const Parameters& p, s
 }
 
 std::vector<std::vector<TestResult>> run_battery(std::span<const BitSequence> sequences, const Parameters& p,
-                                                 std::span<const Test> tests) {
+                                                 std::span<const Test> tests, int threads) {
   std::vector<std::vector<TestResult>> out(sequences.size());
   std::vector<std::exception_ptr> errors(sequences.size());
   const long count = static_cast<long>(sequences.size());
   // Each sequence is independent and writes only its own slot, so the thread count cannot change a result.
   // An exception may not leave an OpenMP region: keep it and rethrow the first one afterwards.
-#pragma omp parallel for schedule(dynamic, 1)
+  const int team = threads > 0 ? threads : omp_get_max_threads();
+#pragma omp parallel for schedule(dynamic, 1) num_threads(team)
   for (long i = 0; i < count; ++i) {
     try {
       out[i] = run_battery(sequences[i], p, tests);

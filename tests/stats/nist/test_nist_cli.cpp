@@ -93,6 +93,17 @@ TEST(NistCli, BenchRuns) {
   const CliRun r = run_cli("bench nist --sequences 2 --bits 65536 --json");
   ASSERT_EQ(r.code, 0);
   EXPECT_NE(r.out.find("\"LinearComplexity\""), std::string::npos);
+  // The shipped wisdom is for 2^20 bits: any other length is planned by FFTW_ESTIMATE.
+  EXPECT_NE(r.out.find("\"fft_plan\": \"FFTW_ESTIMATE\""), std::string::npos);
+}
+
+// --fft-wisdom plans the transform afresh and prints FFTW's wisdom for it instead of the benchmark.
+TEST(NistCli, BenchPrintsFftWisdom) {
+  const CliRun r = run_cli("bench nist --bits 4096 --fft-wisdom");
+  ASSERT_EQ(r.code, 0);
+  EXPECT_EQ(r.out.rfind("(fftw-3", 0), 0u) << r.out;
+  EXPECT_NE(r.out.find("fftw_wisdom"), std::string::npos);
+  EXPECT_EQ(r.out.find("LinearComplexity"), std::string::npos);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "dpdrng/stats/nist/battery.hpp"
 #include "dpdrng/stats/nist/tests.hpp"
 
 namespace dpdrng_test::stats_nist_test_nist_internals {
@@ -157,6 +158,26 @@ TEST(PatternCountsInternals, TheSharedTableGivesEachTestItsOwnCounts) {
     EXPECT_EQ(from16.values[0].p, alone[1].values[0].p);
     EXPECT_THROW(serial(s, 16, &c11), std::invalid_argument);
   }
+}
+
+// The battery on many sequences gives every sequence the same results on one thread as on several.
+TEST(BatteryInternals, TheThreadCountChangesNoResult) {
+  std::vector<BitSequence> seqs;
+  for (unsigned k = 0; k < 6; ++k) seqs.push_back(random_bits(std::size_t{1} << 14, 4000 + k));
+  const auto one = run_battery(seqs, Parameters{}, {}, 1), two = run_battery(seqs, Parameters{}, {}, 2);
+  ASSERT_EQ(one.size(), seqs.size());
+  ASSERT_EQ(two.size(), seqs.size());
+  std::size_t compared = 0;
+  for (std::size_t i = 0; i < seqs.size(); ++i) {
+    ASSERT_EQ(one[i].size(), two[i].size());
+    for (std::size_t t = 0; t < one[i].size(); ++t)
+      for (std::size_t v = 0; v < one[i][t].values.size(); ++v) {
+        const double a = one[i][t].values[v].p, b = two[i][t].values[v].p;
+        EXPECT_TRUE(a == b || (std::isnan(a) && std::isnan(b))) << "sequence " << i << " test " << t;
+        compared += !std::isnan(a);
+      }
+  }
+  EXPECT_GT(compared, 100u);
 }
 
 // SP800-22 2.7.4: slide a window over the block; on a match count it and move on m bits, otherwise one bit.

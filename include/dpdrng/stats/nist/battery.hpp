@@ -20,9 +20,10 @@ TestResult run_test(Test t, const BitSequence& s, const Parameters& p = {});
 // The chosen tests (all when empty) on one sequence, in the reference's order: 188 P-values for the defaults.
 std::vector<TestResult> run_battery(const BitSequence& s, const Parameters& p = {}, std::span<const Test> tests = {});
 
-// The battery on many sequences in parallel; result[i] belongs to sequences[i].
+// The battery on many sequences in parallel, on `threads` OpenMP threads (0: OpenMP's default); result[i]
+// belongs to sequences[i], whatever the thread count.
 std::vector<std::vector<TestResult>> run_battery(std::span<const BitSequence> sequences, const Parameters& p = {},
-                                                 std::span<const Test> tests = {});
+                                                 std::span<const Test> tests = {}, int threads = 0);
 
 // SP800-22 4.2.1: the proportion of m sequences passing at level alpha must lie within
 // (1-alpha) -+ 3 sqrt(alpha(1-alpha)/m). The one computation of that range, for the battery, its report and the
