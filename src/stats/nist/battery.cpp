@@ -1,7 +1,5 @@
 #include "dpdrng/stats/nist/battery.hpp"
 
-#include <omp.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -86,14 +84,19 @@ std::vector<std::vector<TestResult>> run_battery(std::span<const BitSequence> se
   const long count = static_cast<long>(sequences.size());
   // Each sequence is independent and writes only its own slot, so the thread count cannot change a result.
   // An exception may not leave an OpenMP region: keep it and rethrow the first one afterwards.
-  const int team = threads > 0 ? threads : omp_get_max_threads();
-#pragma omp parallel for schedule(dynamic, 1) num_threads(team)
-  for (long i = 0; i < count; ++i) {
+  auto one = [&](long i) {
     try {
       out[i] = run_battery(sequences[i], p, tests);
     } catch (...) {
       errors[i] = std::current_exception();
     }
+  };
+  if (threads > 0) {
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+    for (long i = 0; i < count; ++i) one(i);
+  } else {
+#pragma omp parallel for schedule(dynamic, 1)
+    for (long i = 0; i < count; ++i) one(i);
   }
   for (const auto& e : errors)
     if (e) std::rethrow_exception(e);
