@@ -40,7 +40,8 @@ class Plans {
   struct Lease {
     fftw_plan plan;
     bool own;
-    Lease(fftw_plan p, bool o) : plan(p), own(o) {}
+    bool from_wisdom;
+    Lease(fftw_plan p, bool o, bool w) : plan(p), own(o), from_wisdom(w) {}
     Lease(const Lease&) = delete;
     Lease& operator=(const Lease&) = delete;
     ~Lease() {
@@ -55,27 +56,18 @@ class Plans {
   Lease get(std::size_t n) {
     std::lock_guard lock(mutex_);
     auto it = plans_.find(n);
-    if (it != plans_.end()) return {it->second.plan, false};
+    if (it != plans_.end()) return {it->second.plan, false, it->second.from_wisdom};
     const Made m = plan(n);
-    if (plans_.size() >= kKept) return {m.plan, true};
+    if (plans_.size() >= kKept) return {m.plan, true, m.from_wisdom};
     plans_.emplace(n, m);
-    return {m.plan, false};
-  }
-  // Which plan length n gets (planning it if need be).
-  std::string source(std::size_t n) {
-    { const Lease l = get(n); }
-    std::lock_guard lock(mutex_);
-    auto it = plans_.find(n);
-    return it != plans_.end() && it->second.from_wisdom ? "FFTW wisdom (FFTW_PATIENT)" : "FFTW_ESTIMATE";
+    return {m.plan, false, m.from_wisdom};
   }
   // The wisdom FFTW_PATIENT finds for length n now, the shipped wisdom forgotten first (plans made from it stay
   // valid) and imported again after.
   std::string patient_wisdom(std::size_t n) {
     std::lock_guard lock(mutex_);
     fftw_forget_wisdom();
-    const Buffer<fftw_complex> data(n / 2 + 1);
-    const fftw_plan p = fftw_plan_dft_r2c_1d(static_cast<int>(n), reinterpret_cast<double*>(data.data), data.data,
-                                             FFTW_PATIENT);
+    const fftw_plan p = make(n, FFTW_PATIENT);
     if (!p) throw std::runtime_error("FFTW could not plan a transform of length " + std::to_string(n));
     char* text = fftw_export_wisdom_to_string();
     std::string out = text ? text : "";
@@ -107,13 +99,14 @@ class Plans {
     bool from_wisdom;
   };
   static void import_shipped() { fftw_import_wisdom_from_string(detail::kFftWisdom); }
-  static Made plan(std::size_t n) {
+  // An in-place plan for length n on an array of fftw_malloc's alignment, or null.
+  static fftw_plan make(std::size_t n, unsigned flags) {
     const Buffer<fftw_complex> data(n / 2 + 1);
-    auto make = [&](unsigned flags) {
-      return fftw_plan_dft_r2c_1d(static_cast<int>(n), reinterpret_cast<double*>(data.data), data.data, flags);
-    };
-    if (const fftw_plan p = make(FFTW_PATIENT | FFTW_WISDOM_ONLY)) return {p, true};
-    const fftw_plan p = make(FFTW_ESTIMATE);
+    return fftw_plan_dft_r2c_1d(static_cast<int>(n), reinterpret_cast<double*>(data.data), data.data, flags);
+  }
+  static Made plan(std::size_t n) {
+    if (const fftw_plan p = make(n, FFTW_PATIENT | FFTW_WISDOM_ONLY)) return {p, true};
+    const fftw_plan p = make(n, FFTW_ESTIMATE);
     if (!p) throw std::runtime_error("FFTW could not plan a transform of length " + std::to_string(n));
     return {p, false};
   }
@@ -235,7 +228,11 @@ std::size_t spectral_peaks_below(const BitSequence& s, const double* X, double T
   return below;
 }
 
-std::string fft_plan(std::size_t n) { return plans().source(n); }
+std::string fft_plan(std::size_t n) {
+  if (n < 2 || n > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+    throw std::invalid_argument("FFT: length out of FFTW's range");
+  return plans().get(n).from_wisdom ? "FFTW wisdom (FFTW_PATIENT)" : "FFTW_ESTIMATE";
+}
 
 std::string fft_patient_wisdom(std::size_t n) {
   if (n < 2 || n > static_cast<std::size_t>(std::numeric_limits<int>::max()))
