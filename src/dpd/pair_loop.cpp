@@ -270,8 +270,7 @@ class PairLoop final : public PairForces {
   // Row i's centre and box for the prefilter.
   pair_filter::Rounded rounded(const Box& box, std::uint32_t i) const {
     const auto Lx = static_cast<float>(box.L[0]), Ly = static_cast<float>(box.L[1]), Lz = static_cast<float>(box.L[2]);
-    return {xf_.data(), yf_.data(), zf_.data(), xf_[i], yf_[i], zf_[i], Lx, Ly, Lz, Lx / 2, Ly / 2, Lz / 2,
-            threshold_f_};
+    return {xf_.data(), yf_.data(), zf_.data(), xf_[i], yf_[i], zf_[i], Lx, Ly, Lz, threshold_f_};
   }
 
   // Rows [i0, i1) on a step without a tap of every pair's words: each row's pairs inside r_c collected one row

@@ -182,8 +182,8 @@ TEST(PairFilter, RoundedPrefilterKeepsExactlyTheExactFiltersPairs) {
       for (const std::uint32_t lo : {0u, 1u, 5u, 17u, 650u}) {
         const pf::Centre c = pf::centre(box, x[centre], y[centre], z[centre], 1.0);
         const auto Lx = float(box.L[0]), Ly = float(box.L[1]), Lz = float(box.L[2]);
-        const pf::Rounded f{xf.data(), yf.data(), zf.data(), xf[centre], yf[centre], zf[centre],
-                            Lx, Ly, Lz, Lx / 2, Ly / 2, Lz / 2, threshold};
+        const pf::Rounded f{xf.data(), yf.data(), zf.data(), xf[centre], yf[centre], zf[centre], Lx, Ly, Lz,
+                            threshold};
         Pairs a(n + pf::kSlack), b(n + pf::kSlack);
         const std::size_t kb = pf::append_sparse(x.data(), y.data(), z.data(), lo, n, c, b.out(), 0);
         const std::size_t ka = pf::append_rounded(x.data(), y.data(), z.data(), f, lo, n, c,

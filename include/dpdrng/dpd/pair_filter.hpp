@@ -267,7 +267,7 @@ inline std::size_t append_sparse(const double* x, const double* y, const double*
 struct Rounded {
   const float *x, *y, *z;  // positions rounded to float, readable kSlackF entries past the last
   float cx, cy, cz;        // the centre, rounded
-  float Lx, Ly, Lz, hx, hy, hz;
+  float Lx, Ly, Lz;        // the box edges, rounded
   float threshold;         // rounded_threshold
 };
 
@@ -293,10 +293,12 @@ using V = __m512;
 inline constexpr int kW = 16;
 inline V set1(float v) { return _mm512_set1_ps(v); }
 inline V load(const float* p) { return _mm512_loadu_ps(p); }
-inline V min_image(V d, V L, V h) {
-  const V up = _mm512_maskz_mov_ps(_mm512_cmp_ps_mask(d, h, _CMP_GT_OQ), L);
-  const V neg_h = _mm512_sub_ps(_mm512_setzero_ps(), h), neg_L = _mm512_sub_ps(_mm512_setzero_ps(), L);
-  return _mm512_sub_ps(d, _mm512_mask_mov_ps(up, _mm512_cmp_ps_mask(d, neg_h, _CMP_LT_OQ), neg_L));
+// |min_image(d)| as min(|d|, L − |d|): L − |d| rounds as d ∓ L does (the same magnitudes), and the smaller of
+// the two is the image min_image picks (h = L/2 exactly), so r² is min_image's to the bit in four operations
+// and no mask; the prefilter needs the lengths only.
+inline V image_length(V d, V L) {
+  const V a = _mm512_abs_ps(d);
+  return _mm512_min_ps(a, _mm512_sub_ps(L, a));
 }
 inline unsigned inside(V r2, V t) { return _mm512_cmp_ps_mask(r2, t, _CMP_LT_OQ); }
 // base + t for each lane t set in m, to the front, in order.
@@ -310,11 +312,10 @@ using V = __m256;
 inline constexpr int kW = 8;
 inline V set1(float v) { return _mm256_set1_ps(v); }
 inline V load(const float* p) { return _mm256_loadu_ps(p); }
-inline V min_image(V d, V L, V h) {
-  const V neg_d = _mm256_xor_ps(d, _mm256_set1_ps(-0.0f));
-  const V up = _mm256_and_ps(_mm256_cmp_ps(d, h, _CMP_GT_OQ), L);
-  const V down = _mm256_and_ps(_mm256_cmp_ps(neg_d, h, _CMP_GT_OQ), L);
-  return _mm256_sub_ps(d, _mm256_sub_ps(up, down));
+// |min_image(d)|, as the AVX-512 path has it.
+inline V image_length(V d, V L) {
+  const V a = _mm256_andnot_ps(_mm256_set1_ps(-0.0f), d);
+  return _mm256_min_ps(a, _mm256_sub_ps(L, a));
 }
 inline unsigned inside(V r2, V t) { return unsigned(_mm256_movemask_ps(_mm256_cmp_ps(r2, t, _CMP_LT_OQ))); }
 // For each 8-bit mask, the lanes whose bits are set, to the front, in order.
@@ -341,11 +342,11 @@ inline void put_ids(std::uint32_t* out, std::uint32_t base, unsigned m) {
 inline std::uint32_t maybe_ids(const Rounded& f, std::uint32_t lo, std::uint32_t hi, std::uint32_t* id) {
   using namespace isa_f;
   const V xi = set1(f.cx), yi = set1(f.cy), zi = set1(f.cz), t = set1(f.threshold);
-  const V Lx = set1(f.Lx), Ly = set1(f.Ly), Lz = set1(f.Lz), hx = set1(f.hx), hy = set1(f.hy), hz = set1(f.hz);
+  const V Lx = set1(f.Lx), Ly = set1(f.Ly), Lz = set1(f.Lz);
   std::uint32_t n = 0;
   for (std::uint32_t k = lo; k < hi; k += kW) {
-    const V a = min_image(load(f.x + k) - xi, Lx, hx), b = min_image(load(f.y + k) - yi, Ly, hy),
-            d = min_image(load(f.z + k) - zi, Lz, hz);
+    const V a = image_length(load(f.x + k) - xi, Lx), b = image_length(load(f.y + k) - yi, Ly),
+            d = image_length(load(f.z + k) - zi, Lz);
     const unsigned lanes = hi - k >= std::uint32_t(kW) ? (1u << kW) - 1 : (1u << (hi - k)) - 1;
     const unsigned m = inside(a * a + b * b + d * d, t) & lanes;
     put_ids(id + n, k, m);
