@@ -3,7 +3,13 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <vector>
+
+#if defined(__AVX2__)
+#include <immintrin.h>
+#endif
 
 #include "common.hpp"
 #include "dpdrng/stats/nist/tests.hpp"
@@ -112,39 +118,81 @@ void load_sliced(const BitSequence& s, std::size_t first, std::size_t M, int lan
   }
 }
 
-// Which lanes may lengthen their register: L <= N/2. A lane leaves that set when it grows to L' = N+1-L > N/2,
-// and returns at step 2L'; `back[N]` holds the lanes that return at step N. Unused lanes hold L = M, out of the
-// way of the minimum, and never grow.
+// The lanes' register lengths L, and which lanes may lengthen theirs at step N: those with L <= N/2 (unused lanes
+// hold L = M, out of the way of the minimum, and never grow). With AVX-512 the 64 lengths are four vectors (AVX2:
+// eight): a step's test, update, minimum and maximum are a few instructions each, where a loop over the growing
+// lanes (about a quarter of them a step) mispredicts its exit every step.
 struct GrowState {
-  std::array<int, 64> L{};
-  std::vector<std::uint64_t> back;
-  std::uint64_t low = ~std::uint64_t{0};
+  alignas(64) std::array<std::int32_t, 64> L{};
   int min_L = 0, max_L = 0;
 
   void reset(std::size_t M, int lanes) {
-    for (int l = 0; l < 64; ++l) L[l] = l < lanes ? 0 : static_cast<int>(M);
-    back.assign(M + 1, 0);
-    low = ~std::uint64_t{0};
+    for (int l = 0; l < 64; ++l) L[l] = l < lanes ? 0 : static_cast<std::int32_t>(M);
     min_L = max_L = 0;
   }
-  // The lanes among `d` that grow at step N; updates L for them.
+  // The lanes among `d` that grow at step N; updates L (to N + 1 - L) and the extremes for them.
   std::uint64_t grow(std::uint64_t d, std::size_t N) {
-    low |= back[N];
-    const std::uint64_t g = d & low;
-    if (!g) return 0;
-    low &= ~g;
-    for (std::uint64_t rest = g; rest; rest &= rest - 1) {
-      const int l = std::countr_zero(rest);
-      L[l] = static_cast<int>(N) + 1 - L[l];
-      max_L = std::max(max_L, L[l]);
-      const std::size_t at = 2 * static_cast<std::size_t>(L[l]);
-      if (at < back.size()) back[at] |= std::uint64_t{1} << l;
+    const auto n = static_cast<std::int32_t>(N);
+#if defined(__AVX512F__)
+    const __m512i twice_max = _mm512_set1_epi32(n), next = _mm512_set1_epi32(n + 1);
+    std::uint64_t g = 0;
+    for (int q = 0; q < 4; ++q) {
+      const __m512i v = _mm512_load_si512(L.data() + 16 * q);
+      g |= std::uint64_t(_mm512_cmple_epi32_mask(_mm512_add_epi32(v, v), twice_max)) << (16 * q);
     }
-    // A plain loop over all 64 lanes, which the compiler turns into a few vector minima.
-    int m = L[0];
-    for (int l = 1; l < 64; ++l) m = std::min(m, L[l]);
-    min_L = m;
+    g &= d;
+    if (!g) return 0;
+    __m512i lo = _mm512_set1_epi32(std::numeric_limits<std::int32_t>::max()), hi = _mm512_set1_epi32(max_L);
+    for (int q = 0; q < 4; ++q) {
+      const auto k = static_cast<__mmask16>(g >> (16 * q));
+      __m512i v = _mm512_load_si512(L.data() + 16 * q);
+      v = _mm512_mask_sub_epi32(v, k, next, v);
+      _mm512_store_si512(L.data() + 16 * q, v);
+      // The masked minimum over all lanes: GCC 12's unmasked one reads an undefined source (and warns).
+      lo = _mm512_mask_min_epi32(lo, __mmask16(0xffff), lo, v), hi = _mm512_mask_max_epi32(hi, k, hi, v);
+    }
+    alignas(64) std::array<std::int32_t, 16> a, b;
+    _mm512_store_si512(a.data(), lo), _mm512_store_si512(b.data(), hi);
+    min_L = *std::min_element(a.begin(), a.end()), max_L = *std::max_element(b.begin(), b.end());
     return g;
+#elif defined(__AVX2__)
+    // Eight vectors of eight; a lane of the grown set g is picked by its own bit of g.
+    const __m256i twice_max = _mm256_set1_epi32(n), next = _mm256_set1_epi32(n + 1);
+    std::uint64_t g = 0;
+    for (int q = 0; q < 8; ++q) {
+      const __m256i v = _mm256_load_si256(reinterpret_cast<const __m256i*>(L.data() + 8 * q));
+      const __m256i over = _mm256_cmpgt_epi32(_mm256_add_epi32(v, v), twice_max);
+      g |= std::uint64_t(~_mm256_movemask_ps(_mm256_castsi256_ps(over)) & 0xff) << (8 * q);
+    }
+    g &= d;
+    if (!g) return 0;
+    const __m256i bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+    __m256i lo = _mm256_set1_epi32(std::numeric_limits<std::int32_t>::max()), hi = _mm256_set1_epi32(max_L);
+    for (int q = 0; q < 8; ++q) {
+      const __m256i k = _mm256_set1_epi32(static_cast<int>(g >> (8 * q) & 0xff));
+      const __m256i pick = _mm256_cmpeq_epi32(_mm256_and_si256(k, bit), bit);
+      auto* at = reinterpret_cast<__m256i*>(L.data() + 8 * q);
+      const __m256i v = _mm256_load_si256(at);
+      const __m256i w = _mm256_blendv_epi8(v, _mm256_sub_epi32(next, v), pick);
+      _mm256_store_si256(at, w);
+      // Lengths are never negative, so the lanes not picked may enter the maximum as 0.
+      lo = _mm256_min_epi32(lo, w), hi = _mm256_max_epi32(hi, _mm256_and_si256(pick, w));
+    }
+    alignas(32) std::array<std::int32_t, 8> a, b;
+    _mm256_store_si256(reinterpret_cast<__m256i*>(a.data()), lo);
+    _mm256_store_si256(reinterpret_cast<__m256i*>(b.data()), hi);
+    min_L = *std::min_element(a.begin(), a.end()), max_L = *std::max_element(b.begin(), b.end());
+    return g;
+#else
+    std::uint64_t g = 0;
+    for (int l = 0; l < 64; ++l) g |= std::uint64_t(2 * L[l] <= n) << l;
+    g &= d;
+    if (!g) return 0;
+    for (int l = 0; l < 64; ++l)
+      if (g >> l & 1) L[l] = n + 1 - L[l], max_L = std::max(max_L, int(L[l]));
+    min_L = *std::min_element(L.begin(), L.end());
+    return g;
+#endif
   }
 };
 
