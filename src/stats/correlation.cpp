@@ -1,5 +1,6 @@
 #include "dpdrng/stats/correlation.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "dpdrng/common/error.hpp"
@@ -36,8 +37,10 @@ CorrelationResult pooled_pearson(std::string what, Visit&& visit, double alpha) 
     finite = finite && std::isfinite(x) && std::isfinite(y);
     x_varies = x_varies || x != x0;
     y_varies = y_varies || y != y0;
-    x_max = std::fmax(x_max, std::fabs(x));
-    y_max = std::fmax(y_max, std::fabs(y));
+    // std::max, not std::fmax (a libm call per value): the same for every value, a NaN (left behind by both,
+    // and refused below) included.
+    x_max = std::max(x_max, std::fabs(x));
+    y_max = std::max(y_max, std::fabs(y));
     ++res.n;
   });
   if (!finite) throw InputError("correlation: the noise contains a value that is not a finite number");

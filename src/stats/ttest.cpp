@@ -25,7 +25,8 @@ bool all_equal(std::span<const double> x) {
 
 double max_abs(std::span<const double> x) {
   double m = 0.0;
-  for (const double v : x) m = std::fmax(m, std::fabs(v));
+  // std::max rather than std::fmax (a libm call per value): a NaN is passed over by both.
+  for (const double v : x) m = std::max(m, std::fabs(v));
   return m;
 }
 
