@@ -1,6 +1,8 @@
 // The one place where the run-time noise choice becomes a noise kernel for the pair loop (the keyed hashes'
 // kernels in their families' files, pair_forces_make.hpp).
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "noise_kernel.hpp"
 #include "pair_forces_make.hpp"
@@ -18,10 +20,20 @@ DpdKernel make_kernel(double a, double rc, double gamma, double kT, double dt) {
   return k;
 }
 
+namespace detail {
+std::unique_ptr<PairForces> pair_loop_for(std::unique_ptr<NoiseKernel> noise, const WaterConfig& cfg,
+                                          const DpdKernel& kernel, std::size_t n) {
+  // The pair series are tapped on the production steps.
+  const auto series_steps =
+      cfg.taps.pairs.empty() ? std::size_t{0} : static_cast<std::size_t>(std::max<std::int64_t>(0, cfg.steps - cfg.equilibrate));
+  return make_pair_loop(std::move(noise), kernel, cfg.pairs, cfg.threads, n, cfg.taps.pairs, series_steps);
+}
+}  // namespace detail
+
 namespace {
 template <class Noise>
 std::unique_ptr<PairForces> loop(Noise noise, const WaterConfig& cfg, const DpdKernel& kernel, std::size_t n) {
-  return make_pair_loop(make_noise_kernel(std::move(noise)), kernel, cfg.pairs, cfg.threads, n, cfg.taps.pairs);
+  return detail::pair_loop_for(make_noise_kernel(std::move(noise)), cfg, kernel, n);
 }
 
 template <rng::Family F>

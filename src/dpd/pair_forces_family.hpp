@@ -10,7 +10,7 @@ template <rng::Family F, rng::Seeding S>
 std::unique_ptr<PairForces> make_hashed(const WaterConfig& cfg, const DpdKernel& kernel, std::size_t n) {
   return rng::with_family_hash<F>(cfg.generator, [&]<class G>(const G& gen) -> std::unique_ptr<PairForces> {
     const HashNoise<G, S> noise{gen, cfg.seed, cfg.feed, cfg.distribution};
-    return make_pair_loop(make_noise_kernel(noise), kernel, cfg.pairs, cfg.threads, n, cfg.taps.pairs);
+    return pair_loop_for(make_noise_kernel(noise), cfg, kernel, n);
   });
 }
 

@@ -10,7 +10,15 @@
 #include "dpdrng/dpd/pair_forces.hpp"
 #include "dpdrng/rng/registry.hpp"
 
+namespace dpdrng::dpd {
+class NoiseKernel;
+}
+
 namespace dpdrng::dpd::detail {
+
+// The pair loop of cfg's pair mode, threads and taps around a noise kernel.
+std::unique_ptr<PairForces> pair_loop_for(std::unique_ptr<NoiseKernel> noise, const WaterConfig& cfg,
+                                          const DpdKernel& kernel, std::size_t n);
 
 template <rng::Family F, rng::Seeding S>
 std::unique_ptr<PairForces> make_hashed(const WaterConfig& cfg, const DpdKernel& kernel, std::size_t n);

@@ -101,9 +101,10 @@ void pair_terms(const double* __restrict dx, const double* __restrict dy, const 
 class PairLoop final : public PairForces {
  public:
   PairLoop(std::unique_ptr<NoiseKernel> noise, const DpdKernel& kernel, PairMode mode, int threads, std::size_t n,
-           std::vector<std::pair<std::uint32_t, std::uint32_t>> tap_pairs)
+           std::vector<std::pair<std::uint32_t, std::uint32_t>> tap_pairs, std::size_t series_steps)
       : noise_(std::move(noise)), zero_(noise_->zero()), words_(noise_->words()), k_(kernel), mode_(mode),
-        threads_(threads > 0 ? threads : omp_get_max_threads()), tap_pairs_(std::move(tap_pairs)) {
+        threads_(threads > 0 ? threads : omp_get_max_threads()), tap_pairs_(std::move(tap_pairs)),
+        series_steps_(series_steps) {
     series_ordered_ = std::all_of(tap_pairs_.begin(), tap_pairs_.end(), [](const auto& p) { return p.first < p.second; });
     scratch_.resize(threads_);
     noise_->threads(threads_);
@@ -159,10 +160,11 @@ class PairLoop final : public PairForces {
     return zeta;
   }
 
-  // A hash's ζ in one batch through the noise kernel (the blocks NoiseKernel::pair gives, pair by pair).
+  // ζ in one batch through the noise kernel (the blocks NoiseKernel::pair gives, pair by pair): a hash's, or the
+  // stream's from its pairs' slots of this step (all mode, where every pair has one).
   void zetas_of(const System& s, const std::uint32_t* i, const std::uint32_t* j, std::size_t n, std::uint64_t step,
                 double* out) const override {
-    if (zero_ || noise_->stream()) return PairForces::zetas_of(s, i, j, n, step, out);
+    if (!batches()) return PairForces::zetas_of(s, i, j, n, step, out);
     batch_of(s, i, j, n, step, out, {nullptr, nullptr});
   }
 
@@ -927,9 +929,13 @@ class PairLoop final : public PairForces {
     return {i, j, dx, dy, dz, step};
   }
 
-  // Hash noise on pairs (i[t], j[t]), i < j, at this step: ζ into zeta and, when tap[0] is given, the blocks'
-  // words into tap[w], in one batch through the noise kernel (canonical() leaves such pairs as they are, so the
-  // blocks are NoiseKernel::pair's). Runs outside the parallel regions, on thread 0's scratch.
+  // Whether batch_of serves this noise: a hash, or the stream in all mode.
+  bool batches() const { return !zero_ && (!noise_->stream() || mode_ == PairMode::all); }
+
+  // Noise on pairs (i[t], j[t]), i < j, at this step: ζ into zeta and, when tap[0] is given, the blocks' words
+  // into tap[w], in one batch through the noise kernel (canonical() leaves such pairs as they are, and the stream
+  // reads each pair's slot, so the blocks are NoiseKernel::pair's). Runs outside the parallel regions, on thread
+  // 0's scratch; the stream's step must have begun (compute of this step).
   void batch_of(const System& s, const std::uint32_t* i, const std::uint32_t* j, std::size_t n, std::uint64_t step,
                 double* zeta, std::array<std::uint64_t*, 2> tap) const {
     BatchInputs& in = batch_inputs_;
@@ -938,7 +944,14 @@ class PairLoop final : public PairForces {
       const rng::PairInput p = pair_input(s, i[t], j[t], step);
       in.dx[t] = p.dx, in.dy[t] = p.dy, in.dz[t] = p.dz;
     }
-    noise_->pairs({i, j, n, in.dx.data(), in.dy.data(), in.dz.data(), step, 0, {tap[0], tap[1]}, zeta, nullptr}, 0);
+    const bool stream = noise_->stream();
+    if (stream) {
+      in.slots.resize(n);
+      for (std::size_t t = 0; t < n; ++t) in.slots[t] = pair_slot(i[t], j[t], s.size());
+    }
+    noise_->pairs({i, j, n, in.dx.data(), in.dy.data(), in.dz.data(), step, 0, {tap[0], tap[1]}, zeta, nullptr,
+                   stream ? in.slots.data() : nullptr},
+                  0);
   }
 
   void record_series(const System& s, std::uint64_t step, Taps& taps) const {
@@ -947,9 +960,10 @@ class PairLoop final : public PairForces {
       for (std::size_t q = 0; q < tap_pairs_.size(); ++q) {
         taps.series[q].i = tap_pairs_[q].first, taps.series[q].j = tap_pairs_[q].second;
         taps.series[q].words_per_pair = words_;
+        reserve_series(taps.series[q]);
       }
     }
-    if (!noise_->stream() && series_ordered_) return record_series_batch(s, step, taps);
+    if (batches() && series_ordered_) return record_series_batch(s, step, taps);
     for (auto& ser : taps.series) {
       const std::uint32_t i = ser.i, j = ser.j;
       std::uint64_t words[2] = {0, 0};
@@ -961,7 +975,13 @@ class PairLoop final : public PairForces {
     }
   }
 
-  // record_series for a hash: the series' pairs in one batch.
+  // Room for the run's production steps (series_steps_) up front: no vector of a series is copied as it grows.
+  void reserve_series(PairSeries& ser) const {
+    ser.steps.reserve(series_steps_), ser.zeta.reserve(series_steps_);
+    for (int w = 0; w < words_; ++w) ser.words[std::size_t(w)].reserve(series_steps_);
+  }
+
+  // record_series in one batch (batch_of).
   void record_series_batch(const System& s, std::uint64_t step, Taps& taps) const {
     const std::size_t n = taps.series.size();
     BatchInputs& in = batch_inputs_;
@@ -982,6 +1002,7 @@ class PairLoop final : public PairForces {
     std::vector<std::uint32_t> i, j;
     std::vector<double> dx, dy, dz, zeta;
     std::array<std::vector<std::uint64_t>, 2> words;
+    std::vector<std::size_t> slots;
   };
   mutable BatchInputs batch_inputs_;
 
@@ -992,6 +1013,7 @@ class PairLoop final : public PairForces {
   PairMode mode_;
   int threads_;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> tap_pairs_;
+  std::size_t series_steps_;
   bool series_ordered_ = false;  // every tapped pair has i < j (record_series' batch keeps their blocks)
   std::vector<Row> rows_;  // all mode
   std::vector<double> fcx_, fcy_, fcz_;  // the conservative force per bead (cells mode: in sorted order)
@@ -1018,8 +1040,9 @@ class PairLoop final : public PairForces {
 
 std::unique_ptr<PairForces> make_pair_loop(std::unique_ptr<NoiseKernel> noise, const DpdKernel& kernel,
                                            PairMode mode, int threads, std::size_t n,
-                                           std::vector<std::pair<std::uint32_t, std::uint32_t>> tap_pairs) {
-  return std::make_unique<PairLoop>(std::move(noise), kernel, mode, threads, n, std::move(tap_pairs));
+                                           std::vector<std::pair<std::uint32_t, std::uint32_t>> tap_pairs,
+                                           std::size_t series_steps) {
+  return std::make_unique<PairLoop>(std::move(noise), kernel, mode, threads, n, std::move(tap_pairs), series_steps);
 }
 
 }  // namespace dpdrng::dpd

@@ -298,7 +298,8 @@ inline V load(const float* p) { return _mm512_loadu_ps(p); }
 // and no mask; the prefilter needs the lengths only.
 inline V image_length(V d, V L) {
   const V a = _mm512_abs_ps(d);
-  return _mm512_min_ps(a, _mm512_sub_ps(L, a));
+  // The masked minimum over all lanes: GCC 12's unmasked one reads an undefined source (and warns).
+  return _mm512_mask_min_ps(a, __mmask16(0xffff), a, _mm512_sub_ps(L, a));
 }
 inline unsigned inside(V r2, V t) { return _mm512_cmp_ps_mask(r2, t, _CMP_LT_OQ); }
 // base + t for each lane t set in m, to the front, in order.

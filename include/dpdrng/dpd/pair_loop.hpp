@@ -137,8 +137,10 @@ class NoiseKernel {
   virtual double ns_per_zeta() const = 0;
 };
 
+// series_steps: how many steps will tap the pair series of tap_pairs (room kept for them; more still fit).
 std::unique_ptr<PairForces> make_pair_loop(std::unique_ptr<NoiseKernel> noise, const DpdKernel& kernel,
                                            PairMode mode, int threads, std::size_t n,
-                                           std::vector<std::pair<std::uint32_t, std::uint32_t>> tap_pairs);
+                                           std::vector<std::pair<std::uint32_t, std::uint32_t>> tap_pairs,
+                                           std::size_t series_steps);
 
 }  // namespace dpdrng::dpd
