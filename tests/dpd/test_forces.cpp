@@ -166,6 +166,29 @@ TEST(PairLoop, TappedWordsAreTheCanonicalPairsHash) {
   EXPECT_EQ(r.taps.series[0].zeta[0], zeta);
 }
 
+// The reference stream's series read their pairs' slots of the step, in one batch: each tapped pair's word is
+// the one the raw tap holds at its slot, and its ζ that word's.
+TEST(PairLoop, TheStreamsSeriesReadTheirPairsSlots) {
+  WaterConfig cfg;
+  cfg.particles = 64;
+  cfg.steps = 3;
+  cfg.equilibrate = 1;
+  cfg.generator = rng::validated({"mt19937", 0});
+  cfg.taps.raw_steps = {3};
+  cfg.threads = 1;
+  cfg.taps.pairs = {{0, 1}, {5, 40}, {5, 41}, {62, 63}};
+  const RunResult r = run_water(cfg);
+  ASSERT_EQ(r.taps.raw.size(), 1u);
+  ASSERT_EQ(r.taps.series.size(), cfg.taps.pairs.size());
+  for (const PairSeries& ser : r.taps.series) {
+    ASSERT_EQ(ser.steps.size(), 2u);  // production steps 2 and 3
+    EXPECT_EQ(ser.steps[1], 3);
+    EXPECT_EQ(ser.words[0][1], r.taps.raw[0].words[0][pair_slot(ser.i, ser.j, 64)]) << ser.i << "," << ser.j;
+    const double zeta = rng::draw<rng::Distribution::gauss>(std::array<std::uint64_t, 1>{ser.words[0][1]});
+    EXPECT_EQ(ser.zeta[1], zeta);
+  }
+}
+
 namespace {
 struct Snapshot {
   std::vector<double> x, v;
