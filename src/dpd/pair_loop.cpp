@@ -981,21 +981,45 @@ class PairLoop final : public PairForces {
     for (int w = 0; w < words_; ++w) ser.words[std::size_t(w)].reserve(series_steps_);
   }
 
-  // record_series in one batch (batch_of).
+  // record_series in one batch (batch_of), into the stage: a step's values side by side, so that a step writes
+  // a few cache lines, not one in each of the series' vectors.
   void record_series_batch(const System& s, std::uint64_t step, Taps& taps) const {
     const std::size_t n = taps.series.size();
     BatchInputs& in = batch_inputs_;
-    in.i.resize(n), in.j.resize(n), in.zeta.resize(n), in.words[0].resize(n), in.words[1].resize(n);
-    for (std::size_t q = 0; q < n; ++q) in.i[q] = taps.series[q].i, in.j[q] = taps.series[q].j;
-    std::array<std::uint64_t*, 2> tap{in.words[0].data(), words_ > 1 ? in.words[1].data() : nullptr};
-    batch_of(s, in.i.data(), in.j.data(), n, step, in.zeta.data(), tap);
-    for (std::size_t q = 0; q < n; ++q) {
-      auto& ser = taps.series[q];
-      ser.steps.push_back(static_cast<std::int64_t>(step));
-      for (int w = 0; w < words_; ++w) ser.words[w].push_back(in.words[std::size_t(w)][q]);
-      ser.zeta.push_back(in.zeta[q]);
+    SeriesStage& st = stage_;
+    if (in.i.size() != n) {
+      in.i.resize(n), in.j.resize(n);
+      for (std::size_t q = 0; q < n; ++q) in.i[q] = taps.series[q].i, in.j[q] = taps.series[q].j;
+      st.zeta.resize(SeriesStage::kSteps * n);
+      for (int w = 0; w < words_; ++w) st.words[std::size_t(w)].resize(SeriesStage::kSteps * n);
     }
+    const std::size_t at = st.steps.size() * n;
+    std::array<std::uint64_t*, 2> tap{st.words[0].data() + at, words_ > 1 ? st.words[1].data() + at : nullptr};
+    batch_of(s, in.i.data(), in.j.data(), n, step, st.zeta.data() + at, tap);
+    st.steps.push_back(static_cast<std::int64_t>(step));
+    if (st.steps.size() == SeriesStage::kSteps) flush_stage(taps);
   }
+
+  // The staged steps appended to each series, in step order.
+  void flush_stage(Taps& taps) const {
+    SeriesStage& st = stage_;
+    const std::size_t n = taps.series.size(), m = st.steps.size();
+    for (std::size_t q = 0; q < n; ++q) {
+      PairSeries& ser = taps.series[q];
+      ser.steps.insert(ser.steps.end(), st.steps.begin(), st.steps.end());
+      for (std::size_t c = 0; c < m; ++c) ser.zeta.push_back(st.zeta[c * n + q]);
+      for (int w = 0; w < words_; ++w)
+        for (std::size_t c = 0; c < m; ++c) ser.words[std::size_t(w)].push_back(st.words[std::size_t(w)][c * n + q]);
+    }
+    st.steps.clear();
+  }
+
+ public:
+  void finish_taps(Taps& taps) override {
+    if (!stage_.steps.empty()) flush_stage(taps);
+  }
+
+ private:
 
   // batch_of's and record_series_batch's buffers (serial callers only).
   struct BatchInputs {
@@ -1005,6 +1029,14 @@ class PairLoop final : public PairForces {
     std::vector<std::size_t> slots;
   };
   mutable BatchInputs batch_inputs_;
+  // The pair series' latest steps (record_series_batch), step-major: steps[c]'s values at [c·pairs, (c+1)·pairs).
+  struct SeriesStage {
+    static constexpr std::size_t kSteps = 64;
+    std::vector<std::int64_t> steps;
+    std::vector<double> zeta;
+    std::array<std::vector<std::uint64_t>, 2> words;
+  };
+  mutable SeriesStage stage_;
 
   std::unique_ptr<NoiseKernel> noise_;
   bool zero_;

@@ -204,6 +204,7 @@ RunResult run_water(const WaterConfig& in, const RunHooks& hooks) {
         return vv.step(s, force);
       },
       obs, hooks);
+  pair->finish_taps(r.taps);
   put_scene_run(r, run);
   obs.finish(s);
   r.zeta_correlation = zeta_correlation(cfg, obs.tap_zeta(), tracker);

@@ -189,6 +189,31 @@ TEST(PairLoop, TheStreamsSeriesReadTheirPairsSlots) {
   }
 }
 
+// A run's pair series hold every production step in order, the words of each the step's own: across the
+// pair loop's stage of the latest steps and what is left in it at the end of the run.
+TEST(PairLoop, PairSeriesKeepEveryProductionStepInOrder) {
+  WaterConfig cfg;
+  cfg.particles = 64;
+  cfg.steps = 150;
+  cfg.equilibrate = 10;
+  cfg.generator = rng::validated({"tea64", 2});
+  cfg.feed = rng::Feed::blocks;
+  cfg.taps.raw_steps = {11, 75, 130, 150};
+  cfg.threads = 1;
+  cfg.taps.pairs = {{0, 1}, {5, 40}, {62, 63}};
+  const RunResult r = run_water(cfg);
+  ASSERT_EQ(r.taps.raw.size(), cfg.taps.raw_steps.size());
+  for (const PairSeries& ser : r.taps.series) {
+    ASSERT_EQ(ser.steps.size(), 140u);
+    ASSERT_EQ(ser.zeta.size(), 140u);
+    for (std::size_t c = 0; c < ser.steps.size(); ++c) EXPECT_EQ(ser.steps[c], std::int64_t(11 + c));
+    for (const RawTap& raw : r.taps.raw)
+      for (int w = 0; w < 2; ++w)
+        EXPECT_EQ(ser.words[w][std::size_t(raw.step - 11)], raw.words[w][pair_slot(ser.i, ser.j, 64)])
+            << ser.i << "," << ser.j << " step " << raw.step << " word " << w;
+  }
+}
+
 namespace {
 struct Snapshot {
   std::vector<double> x, v;

@@ -106,6 +106,9 @@ class PairForces {
   // tap_zeta: fill ForceSums::zeta.
   virtual ForceSums compute(System& s, VelocityView v, std::uint64_t step, bool tap_raw, bool tap_series,
                             bool tap_zeta, Taps& taps) = 0;
+  // Moves into taps what compute() still holds of them (the pair series' latest steps): once after a run's last
+  // compute(), before the taps are read.
+  virtual void finish_taps(Taps&) {}
   // Calibration on this run's noise: nanoseconds per generator call (raw words, batched as in the pair loop;
   // mt19937: per word of the step's buffer) and per distribution transform (ζ from a block).
   virtual double ns_per_number() const = 0;
