@@ -24,8 +24,8 @@ namespace detail {
 std::unique_ptr<PairForces> pair_loop_for(std::unique_ptr<NoiseKernel> noise, const WaterConfig& cfg,
                                           const DpdKernel& kernel, std::size_t n) {
   // The pair series are tapped on the production steps.
-  const auto series_steps =
-      cfg.taps.pairs.empty() ? std::size_t{0} : static_cast<std::size_t>(std::max<std::int64_t>(0, cfg.steps - cfg.equilibrate));
+  const std::int64_t production = std::max<std::int64_t>(0, cfg.steps - cfg.equilibrate);
+  const auto series_steps = cfg.taps.pairs.empty() ? std::size_t{0} : static_cast<std::size_t>(production);
   return make_pair_loop(std::move(noise), kernel, cfg.pairs, cfg.threads, n, cfg.taps.pairs, series_steps);
 }
 }  // namespace detail

@@ -152,6 +152,10 @@ class PairLoop final : public PairForces {
     return sums;
   }
 
+  void finish_taps(Taps& taps) override {
+    if (!stage_.steps.empty()) flush_stage(taps);
+  }
+
   double zeta_of(const System& s, std::uint32_t i, std::uint32_t j, std::uint64_t step) const override {
     if (zero_ || (noise_->stream() && mode_ != PairMode::all)) return std::nan("");
     std::uint64_t words[2] = {0, 0};
@@ -1014,18 +1018,10 @@ class PairLoop final : public PairForces {
     st.steps.clear();
   }
 
- public:
-  void finish_taps(Taps& taps) override {
-    if (!stage_.steps.empty()) flush_stage(taps);
-  }
-
- private:
-
   // batch_of's and record_series_batch's buffers (serial callers only).
   struct BatchInputs {
     std::vector<std::uint32_t> i, j;
-    std::vector<double> dx, dy, dz, zeta;
-    std::array<std::vector<std::uint64_t>, 2> words;
+    std::vector<double> dx, dy, dz;
     std::vector<std::size_t> slots;
   };
   mutable BatchInputs batch_inputs_;
