@@ -144,16 +144,27 @@ TEST(PairNoise, SymmetricForEverySeedingAndGenerator) {
         });
 }
 
-// The raw words the engine taps for a pair are those of the canonical input: i < j and d = r_j − r_i.
-TEST(PairLoop, TappedWordsAreTheCanonicalPairsHash) {
+namespace {
+// A 64-bead run of `steps` steps (`equilibrate` of them before production) on one thread, tapping every pair's
+// words on raw_steps and the series of `pairs`.
+WaterConfig tapped_run(const rng::GeneratorSpec& generator, std::int64_t steps, std::int64_t equilibrate,
+                       std::vector<std::int64_t> raw_steps,
+                       std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs) {
   WaterConfig cfg;
   cfg.particles = 64;
-  cfg.steps = 3;
-  cfg.equilibrate = 1;
-  cfg.generator = rng::validated({"tea32", 1});
-  cfg.taps.raw_steps = {2};
+  cfg.steps = steps;
+  cfg.equilibrate = equilibrate;
+  cfg.generator = rng::validated(generator);
+  cfg.taps.raw_steps = std::move(raw_steps);
   cfg.threads = 1;
-  cfg.taps.pairs = {{5, 40}};
+  cfg.taps.pairs = std::move(pairs);
+  return cfg;
+}
+}  // namespace
+
+// The raw words the engine taps for a pair are those of the canonical input: i < j and d = r_j − r_i.
+TEST(PairLoop, TappedWordsAreTheCanonicalPairsHash) {
+  const WaterConfig cfg = tapped_run({"tea32", 1}, 3, 1, {2}, {{5, 40}});
   const RunResult r = run_water(cfg);
   ASSERT_EQ(r.taps.raw.size(), 1u);
   EXPECT_EQ(r.taps.raw[0].words[0].size(), 64u * 63u / 2u);
@@ -169,14 +180,7 @@ TEST(PairLoop, TappedWordsAreTheCanonicalPairsHash) {
 // The reference stream's series read their pairs' slots of the step, in one batch: each tapped pair's word is
 // the one the raw tap holds at its slot, and its ζ that word's.
 TEST(PairLoop, TheStreamsSeriesReadTheirPairsSlots) {
-  WaterConfig cfg;
-  cfg.particles = 64;
-  cfg.steps = 3;
-  cfg.equilibrate = 1;
-  cfg.generator = rng::validated({"mt19937", 0});
-  cfg.taps.raw_steps = {3};
-  cfg.threads = 1;
-  cfg.taps.pairs = {{0, 1}, {5, 40}, {5, 41}, {62, 63}};
+  const WaterConfig cfg = tapped_run({"mt19937", 0}, 3, 1, {3}, {{0, 1}, {5, 40}, {5, 41}, {62, 63}});
   const RunResult r = run_water(cfg);
   ASSERT_EQ(r.taps.raw.size(), 1u);
   ASSERT_EQ(r.taps.series.size(), cfg.taps.pairs.size());
@@ -192,15 +196,8 @@ TEST(PairLoop, TheStreamsSeriesReadTheirPairsSlots) {
 // A run's pair series hold every production step in order, the words of each the step's own: across the
 // pair loop's stage of the latest steps and what is left in it at the end of the run.
 TEST(PairLoop, PairSeriesKeepEveryProductionStepInOrder) {
-  WaterConfig cfg;
-  cfg.particles = 64;
-  cfg.steps = 150;
-  cfg.equilibrate = 10;
-  cfg.generator = rng::validated({"tea64", 2});
+  WaterConfig cfg = tapped_run({"tea64", 2}, 150, 10, {11, 75, 130, 150}, {{0, 1}, {5, 40}, {62, 63}});
   cfg.feed = rng::Feed::blocks;
-  cfg.taps.raw_steps = {11, 75, 130, 150};
-  cfg.threads = 1;
-  cfg.taps.pairs = {{0, 1}, {5, 40}, {62, 63}};
   const RunResult r = run_water(cfg);
   ASSERT_EQ(r.taps.raw.size(), cfg.taps.raw_steps.size());
   for (const PairSeries& ser : r.taps.series) {
