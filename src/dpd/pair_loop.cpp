@@ -1004,18 +1004,25 @@ class PairLoop final : public PairForces {
     if (st.steps.size() == SeriesStage::kSteps) flush_stage(taps);
   }
 
-  // The staged steps appended to each series, in step order.
+  // The staged steps appended to each series, in step order: one array of the stage at a time, so that its
+  // kSteps rows stay in L1 while every series takes its column.
   void flush_stage(Taps& taps) const {
     SeriesStage& st = stage_;
     const std::size_t n = taps.series.size(), m = st.steps.size();
-    for (std::size_t q = 0; q < n; ++q) {
-      PairSeries& ser = taps.series[q];
-      ser.steps.insert(ser.steps.end(), st.steps.begin(), st.steps.end());
-      for (std::size_t c = 0; c < m; ++c) ser.zeta.push_back(st.zeta[c * n + q]);
-      for (int w = 0; w < words_; ++w)
-        for (std::size_t c = 0; c < m; ++c) ser.words[std::size_t(w)].push_back(st.words[std::size_t(w)][c * n + q]);
-    }
+    for (auto& ser : taps.series) ser.steps.insert(ser.steps.end(), st.steps.begin(), st.steps.end());
+    for (std::size_t q = 0; q < n; ++q) append_column(st.zeta.data() + q, n, m, taps.series[q].zeta);
+    for (std::size_t w = 0; w < std::size_t(words_); ++w)
+      for (std::size_t q = 0; q < n; ++q) append_column(st.words[w].data() + q, n, m, taps.series[q].words[w]);
     st.steps.clear();
+  }
+
+  // m values `stride` apart from `first`, appended to `out` (its room reserved: no reallocation).
+  template <class T>
+  static void append_column(const T* first, std::size_t stride, std::size_t m, std::vector<T>& out) {
+    const std::size_t at = out.size();
+    out.resize(at + m);
+    T* o = out.data() + at;
+    for (std::size_t c = 0; c < m; ++c) o[c] = first[c * stride];
   }
 
   // batch_of's and record_series_batch's buffers (serial callers only).
