@@ -1,5 +1,6 @@
 #pragma once
 // TEA (Wheeler & Needham 1994) as Okada, Brumby & Yasuoka (PLoS ONE 2021) use it: 32TEA(n) and 64TEA(n).
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cstddef>
@@ -59,6 +60,45 @@ inline void tea_rounds2(V& a0, V& a1, V& b0, V& b1, const std::array<W, 4>& k, i
   for (int r = 0; r < n; ++r) sum += W(kTeaDelta), tea_feistel(a0, a1, sum, k), tea_feistel(b0, b1, sum, k);
 }
 
+// A batch of n calls on SIMD lanes V of words W, each lane bit for bit the scalar call's: two registers side by
+// side while they fill (tea_rounds2), then one; the last calls, fewer than a register, as one register on a
+// zero-padded copy of their inputs from kPadRounds rounds on (a scalar call pays its whole chain's latency: at 32
+// rounds the pair loop's batches of ~100 pairs spent as long on their tails as on the rest), call by call below.
+// load(a, b, x0, x1) reads a register's calls from a[0..) and b[0..); store(out, x0, x1) writes their blocks;
+// scalar(c) is call c's block.
+inline constexpr int kPadRounds = 8;
+
+template <int R, class V, class W, class A, class B, class Block, class Load, class Store, class Scalar>
+void tea_lanes(const std::array<W, 4>& k, int rounds, const A* a, const B* b, std::size_t n, Block* out, Load load,
+               Store store, Scalar scalar) {
+  constexpr std::size_t L = sizeof(V) / sizeof(W);
+  std::size_t c = 0;
+  for (; c + 2 * L <= n; c += 2 * L) {
+    V a0, a1, b0, b1;
+    load(a + c, b + c, a0, a1), load(a + c + L, b + c + L, b0, b1);
+    tea_rounds2<R>(a0, a1, b0, b1, k, rounds);
+    store(out + c, a0, a1), store(out + c + L, b0, b1);
+  }
+  const auto one = [&](const A* pa, const B* pb, Block* po) {
+    V x0, x1;
+    load(pa, pb, x0, x1);
+    tea_rounds<R>(x0, x1, k, rounds);
+    store(po, x0, x1);
+  };
+  for (; c + L <= n; c += L) one(a + c, b + c, out + c);
+  const std::size_t m = n - c;
+  if (m > 0 && (R > 0 ? R : rounds) >= kPadRounds) {
+    A pa[L] = {};
+    B pb[L] = {};
+    Block po[L];
+    std::copy_n(a + c, m, pa), std::copy_n(b + c, m, pb);
+    one(pa, pb, po);
+    std::copy_n(po, m, out + c);
+    return;
+  }
+  for (; c < n; ++c) out[c] = scalar(c);
+}
+
 // R > 0: rounds fixed at compile time; R == 0: `rounds` chosen at run time (any 1..64).
 template <int R>
 struct RoundCount {
@@ -100,25 +140,21 @@ struct Tea32 {
   // pair loop hashes a batch of pairs per call when a generator has these (noise.hpp, HashNoise::kBatch).
   void distance_batch(const double* dx, const double*, const double*, std::size_t n, Block* out) const {
     static_assert(sizeof(Block) == sizeof(std::uint64_t), "blocks are stored as plain words");
-    const std::size_t whole = n - n % 16;  // (a tail loop from the vector loop's end warns falsely in GCC 12)
-    for (std::size_t c = 0; c < whole; c += 16) {
-      simd::u32x16 x0, x1;
-      simd::split_words(dx + c, x0, x1);
-      tea_rounds<R>(x0, x1, key, rounds);
-      simd::join_words(out + c, x0, x1);
-    }
-    for (std::size_t c = whole; c < n; ++c) out[c] = distance(dx[c], 0.0, 0.0);
+    tea_lanes<R, simd::u32x16>(
+        key, rounds, dx, dx, n, out,
+        [](const double* x, const double*, simd::u32x16& x0, simd::u32x16& x1) { simd::split_words(x, x0, x1); },
+        [](Block* o, const simd::u32x16& x0, const simd::u32x16& x1) { simd::join_words(o, x0, x1); },
+        [&](std::size_t c) { return distance(dx[c], 0.0, 0.0); });
   }
   void pair_step_batch(const std::uint32_t* i, const std::uint32_t* j, std::uint64_t step, std::uint64_t seed,
                        std::size_t n, Block* out) const {
-    const TeaKey k = step_key(step, seed);
-    const std::size_t whole = n - n % 16;
-    for (std::size_t c = 0; c < whole; c += 16) {
-      simd::u32x16 x0 = simd::load<simd::u32x16>(i + c), x1 = simd::load<simd::u32x16>(j + c);
-      tea_rounds<R>(x0, x1, k, rounds);
-      simd::join_words(out + c, x0, x1);
-    }
-    for (std::size_t c = whole; c < n; ++c) out[c] = pair_step(i[c], j[c], step, seed);
+    tea_lanes<R, simd::u32x16>(
+        step_key(step, seed), rounds, i, j, n, out,
+        [](const std::uint32_t* pi, const std::uint32_t* pj, simd::u32x16& x0, simd::u32x16& x1) {
+          x0 = simd::load<simd::u32x16>(pi), x1 = simd::load<simd::u32x16>(pj);
+        },
+        [](Block* o, const simd::u32x16& x0, const simd::u32x16& x1) { simd::join_words(o, x0, x1); },
+        [&](std::size_t c) { return pair_step(i[c], j[c], step, seed); });
   }
 };
 
@@ -159,26 +195,24 @@ struct Tea64 {
   // Tea32's).
   void distance_batch(const double* dx, const double* dy, const double*, std::size_t n, Block* out) const {
     static_assert(sizeof(Block) == 2 * sizeof(std::uint64_t), "blocks are stored as plain words");
-    const Key64 k = key64();
-    const std::size_t whole = n - n % 8;
-    for (std::size_t c = 0; c < whole; c += 8) {
-      simd::u64x8 x0 = simd::load<simd::u64x8>(dx + c), x1 = simd::load<simd::u64x8>(dy + c);
-      tea_rounds<R>(x0, x1, k, rounds);
-      simd::store_pairs(out + c, x0, x1);
-    }
-    for (std::size_t c = whole; c < n; ++c) out[c] = distance(dx[c], dy[c], 0.0);
+    tea_lanes<R, simd::u64x8>(
+        key64(), rounds, dx, dy, n, out,
+        [](const double* x, const double* y, simd::u64x8& x0, simd::u64x8& x1) {
+          x0 = simd::load<simd::u64x8>(x), x1 = simd::load<simd::u64x8>(y);
+        },
+        [](Block* o, const simd::u64x8& x0, const simd::u64x8& x1) { simd::store_pairs(o, x0, x1); },
+        [&](std::size_t c) { return distance(dx[c], dy[c], 0.0); });
   }
   void pair_step_batch(const std::uint32_t* i, const std::uint32_t* j, std::uint64_t step, std::uint64_t seed,
                        std::size_t n, Block* out) const {
-    const Key64 k = seed_key(seed);
-    const std::size_t whole = n - n % 8;
-    for (std::size_t c = 0; c < whole; c += 8) {
-      simd::u64x8 x0, x1 = simd::u64x8{} + step;
-      for (int l = 0; l < 8; ++l) x0[l] = join32(j[c + l], i[c + l]);
-      tea_rounds<R>(x0, x1, k, rounds);
-      simd::store_pairs(out + c, x0, x1);
-    }
-    for (std::size_t c = whole; c < n; ++c) out[c] = pair_step(i[c], j[c], step, seed);
+    tea_lanes<R, simd::u64x8>(
+        seed_key(seed), rounds, i, j, n, out,
+        [step](const std::uint32_t* pi, const std::uint32_t* pj, simd::u64x8& x0, simd::u64x8& x1) {
+          for (int l = 0; l < 8; ++l) x0[l] = join32(pj[l], pi[l]);
+          x1 = simd::u64x8{} + step;
+        },
+        [](Block* o, const simd::u64x8& x0, const simd::u64x8& x1) { simd::store_pairs(o, x0, x1); },
+        [&](std::size_t c) { return pair_step(i[c], j[c], step, seed); });
   }
 };
 
