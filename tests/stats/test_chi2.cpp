@@ -78,6 +78,22 @@ TEST(Chi2Uniform, BinEdgesAreHalfOpen) {
   EXPECT_EQ(r.counts, (std::vector<std::uint64_t>{20, 20, 20}));
 }
 
+// The counts of shuffled values, lengths with every remainder modulo four, against a count of each bin by the
+// definition (floor(u·k)) value after value.
+TEST(Chi2Uniform, CountsOfShuffledValuesAreTheDefinitions) {
+  std::uint64_t x = 88172645463325252ull;  // xorshift64 (Marsaglia 2003): any scattering of bins will do
+  for (std::size_t n : {400, 401, 402, 403}) {
+    std::vector<double> u(n);
+    std::vector<std::uint64_t> expected(5, 0);
+    for (auto& v : u) {
+      x ^= x << 13, x ^= x >> 7, x ^= x << 17;
+      v = rng::to_unit(x);
+      ++expected[static_cast<std::size_t>(std::floor(v * 5))];
+    }
+    EXPECT_EQ(chi2_uniform(u, {.bins = 5}).counts, expected) << n;
+  }
+}
+
 // A plain counter i/n fills every bin exactly: the histogram is perfect although the sequence is as far from
 // random as it gets. χ² cannot see this (the correlation checks can; see test_correlation.cpp).
 TEST(Chi2Uniform, PlainCounterHasAPerfectHistogram) {
