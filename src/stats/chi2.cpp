@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "dpdrng/common/error.hpp"
+#include "dpdrng/rng/distribution.hpp"
 
 namespace dpdrng::stats {
 
@@ -46,32 +47,34 @@ void check_unit_interval(std::span<const double> u01) {
 }
 
 // Four histograms take consecutive values in turn and are summed at the end, so that increments of one bin do
-// not wait for each other (the counts are integers: the same whatever the order).
-std::vector<std::uint64_t> histogram(std::span<const double> u01, int bins) {
+// not wait for each other (the counts are integers: the same whatever the order). unit(v) is v's value in [0,1).
+template <class T, class Unit>
+std::vector<std::uint64_t> histogram(std::span<const T> values, int bins, Unit unit) {
   const auto w = static_cast<std::size_t>(bins);
   std::vector<std::uint64_t> four(4 * w, 0);
   const double k = bins;
   // u < 1 keeps u*k below k in round-to-nearest for every k; the clamp is a guard, not a correction.
-  const auto bin = [k, last = w - 1](double u) { return std::min(static_cast<std::size_t>(u * k), last); };
+  const auto bin = [&, last = w - 1](const T& v) { return std::min(static_cast<std::size_t>(unit(v) * k), last); };
   std::size_t t = 0;
-  for (; t + 4 <= u01.size(); t += 4)
-    ++four[bin(u01[t])], ++four[w + bin(u01[t + 1])], ++four[2 * w + bin(u01[t + 2])],
-        ++four[3 * w + bin(u01[t + 3])];
-  for (; t < u01.size(); ++t) ++four[bin(u01[t])];
+  for (; t + 4 <= values.size(); t += 4)
+    ++four[bin(values[t])], ++four[w + bin(values[t + 1])], ++four[2 * w + bin(values[t + 2])],
+        ++four[3 * w + bin(values[t + 3])];
+  for (; t < values.size(); ++t) ++four[bin(values[t])];
   std::vector<std::uint64_t> counts(w);
   for (std::size_t b = 0; b < w; ++b) counts[b] = four[b] + four[w + b] + four[2 * w + b] + four[3 * w + b];
   return counts;
 }
 
-}  // namespace
-
-Chi2Result chi2_uniform(std::span<const double> u01, const Chi2Options& options) {
+void check_options(const Chi2Options& options) {
   if (options.bins < 0 || options.bins == 1) throw InputError("chi2: the bin count must be at least 2");
   if (!(options.alpha > 0.0 && options.alpha < 1.0)) throw InputError("chi2: alpha must lie in (0,1)");
-  check_unit_interval(u01);
+}
 
+// The test on n values whose histogram count(bins) gives.
+template <class Count>
+Chi2Result chi2_of(std::size_t n, const Chi2Options& options, Count count) {
   Chi2Result res;
-  res.n = u01.size();
+  res.n = n;
   res.alpha = options.alpha;
   res.bins = options.bins > 0 ? options.bins : sturges_bins(res.n);
   res.dof = res.bins - 1;
@@ -82,12 +85,26 @@ Chi2Result chi2_uniform(std::span<const double> u01, const Chi2Options& options)
                  " bins)";
     return res;
   }
-
-  res.counts = histogram(u01, res.bins);
+  res.counts = count(res.bins);
   res.statistic = chi2_statistic_equal(res.counts, res.expected);
   res.p_value = chi2_upper_tail(res.statistic, res.dof);
   res.verdict = verdict_at(res.p_value, res.alpha);
   return res;
+}
+
+}  // namespace
+
+Chi2Result chi2_uniform(std::span<const double> u01, const Chi2Options& options) {
+  check_options(options);
+  check_unit_interval(u01);
+  return chi2_of(u01.size(), options, [u01](int bins) { return histogram(u01, bins, [](double u) { return u; }); });
+}
+
+Chi2Result chi2_uniform_words(std::span<const std::uint64_t> words, const Chi2Options& options) {
+  check_options(options);
+  return chi2_of(words.size(), options, [words](int bins) {
+    return histogram(words, bins, [](std::uint64_t w) { return rng::to_unit(w); });
+  });
 }
 
 double chi2_statistic_equal(std::span<const std::uint64_t> counts, double expected) {

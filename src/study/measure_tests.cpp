@@ -35,7 +35,7 @@ void record_fraction(const std::string& base, const std::vector<stats::Verdict>&
   out.scalars[base + ".binomial_p"] = f.binomial_p;
 }
 
-// The words' uniforms into u (one buffer for every step or pair of a cell, not an allocation each).
+// The words' uniforms into u (one buffer for every pair of a cell, not an allocation each).
 const std::vector<double>& to_unit(const std::vector<std::uint64_t>& words, std::vector<double>& u) {
   u.resize(words.size());
   std::transform(words.begin(), words.end(), u.begin(), [](std::uint64_t w) { return rng::to_unit(w); });
@@ -50,11 +50,10 @@ void record_chi2(const dpd::Taps& taps, const TapPlan& plan, const TestParams& t
   for (const auto& t : taps.raw) wpp = std::max(wpp, t.words_per_pair);
   for (int k = 0; k < wpp; ++k) {
     std::vector<stats::Verdict> verdicts;
-    std::vector<double> p, stat, u;
+    std::vector<double> p, stat;
     for (const auto& t : taps.raw) {
       if (!std::binary_search(plan.chi2_steps.begin(), plan.chi2_steps.end(), t.step)) continue;
-      const stats::Chi2Result r =
-          stats::chi2_uniform(to_unit(t.words[std::size_t(k)], u), stats::Chi2Options{0, tests.alpha});
+      const stats::Chi2Result r = stats::chi2_uniform_words(t.words[std::size_t(k)], {0, tests.alpha});
       verdicts.push_back(r.verdict);
       p.push_back(r.verdict == stats::Verdict::not_applicable ? NAN : r.p_value);
       stat.push_back(r.statistic);

@@ -94,6 +94,26 @@ TEST(Chi2Uniform, CountsOfShuffledValuesAreTheDefinitions) {
   }
 }
 
+// On generator words the test is the test on their to_unit values: the same counts, statistic and P-value, with
+// Sturges' bins and with a count that is not a power of two (where u·k rounds).
+TEST(Chi2Uniform, WordsGiveTheTestOfTheirUniforms) {
+  std::uint64_t x = 2463534242ull;
+  std::vector<std::uint64_t> words(32641);
+  for (auto& w : words) x ^= x << 13, x ^= x >> 7, x ^= x << 17, w = x;
+  words[5] = 0, words[6] = ~std::uint64_t{0};  // the ends of [0,1)
+  std::vector<double> u(words.size());
+  for (std::size_t t = 0; t < u.size(); ++t) u[t] = rng::to_unit(words[t]);
+  for (const int bins : {0, 7, 1000}) {
+    const Chi2Result a = chi2_uniform_words(words, {.bins = bins}), b = chi2_uniform(u, {.bins = bins});
+    EXPECT_EQ(a.bins, b.bins);
+    EXPECT_EQ(a.counts, b.counts) << bins;
+    EXPECT_EQ(a.statistic, b.statistic);
+    EXPECT_EQ(a.p_value, b.p_value);
+  }
+  EXPECT_EQ(chi2_uniform_words(std::span(words).first(16)).verdict, Verdict::not_applicable);
+  EXPECT_THROW(chi2_uniform_words(words, {.bins = 1}), InputError);
+}
+
 // A plain counter i/n fills every bin exactly: the histogram is perfect although the sequence is as far from
 // random as it gets. χ² cannot see this (the correlation checks can; see test_correlation.cpp).
 TEST(Chi2Uniform, PlainCounterHasAPerfectHistogram) {

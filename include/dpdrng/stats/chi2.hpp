@@ -38,6 +38,9 @@ struct Chi2Result {
 // u01: values in [0,1). Throws InputError for NaN or a value outside [0,1) (naming its index), and for
 // options.bins of 1 or negative. Too few values for the bins: verdict not_applicable with the reason.
 Chi2Result chi2_uniform(std::span<const double> u01, const Chi2Options& options = {});
+// The same test on generator words, each taken as rng::to_unit(w) (always in [0,1)): chi2_uniform of those
+// values, without storing them.
+Chi2Result chi2_uniform_words(std::span<const std::uint64_t> words, const Chi2Options& options = {});
 
 // Upper tail of χ²(dof) through GSL's regularised incomplete gamma function Q(dof/2, x/2).
 double chi2_upper_tail(double x, int dof);
