@@ -30,39 +30,12 @@ class NoiseKernelOf final : public NoiseKernel {
     if constexpr (Noise::kStream) noise_.begin_step(slots);
   }
 
-  std::size_t row(const RowBatch& b, int thread) override {
-    const std::size_t m = b.m;
-    Scratch& sc = scratch(thread, m);
-    if constexpr (kBatched) {
-      if (!b.tap[0]) return row_batched(b, sc);
-    }
-    if (!b.tap[0]) return row_kept(b, sc);
+  void row_words(const RowWords& b, int thread) override {
+    Scratch& sc = scratch(thread, b.m);
     Block* blk = sc.blk.data();
-    double *dxs = b.dx, *dys = b.dy, *dzs = b.dz, *r2s = b.r2;
-    const std::uint32_t i = b.i;
-    row_blocks(b, sc, blk, false);
+    row_blocks(b, sc, blk);
     for (int w = 0; w < Noise::kWords; ++w)
-      for (std::size_t t = 0; t < m; ++t) b.tap[w][t] = blk[t][w];
-    // Keep the blocks of the pairs inside r_c, in order; second blocks first, while r2s covers every pair.
-    if (noise_.feed() == rng::Feed::blocks) {
-      Block* blk2 = sc.blk2.data();
-      row_blocks(b, sc, blk2, true);
-      std::size_t k2 = 0;
-      for (std::size_t t = 0; t < m; ++t)
-        if (r2s[t] < b.rc2) blk2[k2++] = blk2[t];
-    }
-    const double rc2 = b.rc2;
-    std::uint32_t* js = b.j;
-    std::size_t k = 0;
-    for (std::size_t t = 0; t < m; ++t) {
-      if (!(r2s[t] < rc2)) continue;
-      js[k] = std::uint32_t(i + 1 + t);
-      dxs[k] = dxs[t], dys[k] = dys[t], dzs[k] = dzs[t], r2s[k] = r2s[t], blk[k] = blk[t];
-      ++k;
-    }
-    noise_.zetas(blk, sc.blk2.data(), b.zeta, k);
-    if (b.used) copy_used(blk, sc.blk2.data(), k, b.used);
-    return k;
+      for (std::size_t t = 0; t < b.m; ++t) b.tap[w][t] = blk[t][w];
   }
 
   void pairs(const PairBatch& b, int thread) override {
@@ -106,47 +79,17 @@ class NoiseKernelOf final : public NoiseKernel {
     std::vector<double> dx, dy, dz;
   };
 
-  // The blocks of every candidate of row b (pairs (i, i + 1 + t)), or their second blocks: a batched generator's
-  // in one call.
-  void row_blocks(const RowBatch& b, Scratch& sc, Block* out, bool second) const {
+  // The blocks of every pair of row b (pairs (i, i + 1 + t)): a batched generator's in one call.
+  void row_blocks(const RowWords& b, Scratch& sc, Block* out) const {
     const std::uint32_t i = b.i;
     if constexpr (kBatched) {
       sc.i.assign(b.m, i), sc.j.resize(b.m);
       for (std::size_t t = 0; t < b.m; ++t) sc.j[t] = std::uint32_t(i + 1 + t);
-      noise_.raw_batch(sc.i.data(), sc.j.data(), b.dx, b.dy, b.dz, b.step, b.m, out, second);
+      noise_.raw_batch(sc.i.data(), sc.j.data(), b.dx, b.dy, b.dz, b.step, b.m, out, false);
     } else {
-      for (std::size_t t = 0; t < b.m; ++t) {
-        const rng::PairInput p{i, std::uint32_t(i + 1 + t), b.dx[t], b.dy[t], b.dz[t], b.step};
-        out[t] = second ? noise_.raw2(p, b.slot + t) : noise_.raw(p, b.slot + t);
-      }
+      for (std::size_t t = 0; t < b.m; ++t)
+        out[t] = noise_.raw(rng::PairInput{i, std::uint32_t(i + 1 + t), b.dx[t], b.dy[t], b.dz[t], b.step}, b.slot + t);
     }
-  }
-
-  // A row without a tap under a batched generator: one call for the row's pairs inside r_c, the same blocks the
-  // tapped path keeps.
-  std::size_t row_batched(const RowBatch& b, Scratch& sc) {
-    const std::size_t k = compact_in_range(b.i + 1, b.m, b.rc2, b.dx, b.dy, b.dz, b.r2, b.j);
-    sc.i.assign(k, b.i);
-    batch_zetas(sc, sc.i.data(), b.j, b.dx, b.dy, b.dz, b.step, k, b.zeta);
-    if (b.used) copy_used(sc.blk.data(), sc.blk2.data(), k, b.used);
-    return k;
-  }
-
-  // A row without a tap: the blocks of its pairs inside r_c only (a stream's slots read where the pairs lie
-  // in the row), the same blocks the tapped path keeps.
-  std::size_t row_kept(const RowBatch& b, Scratch& sc) {
-    const std::size_t k = compact_in_range(b.i + 1, b.m, b.rc2, b.dx, b.dy, b.dz, b.r2, b.j);
-    Block* blk = sc.blk.data();
-    const bool two = noise_.feed() == rng::Feed::blocks;
-    for (std::size_t q = 0; q < k; ++q) {
-      const rng::PairInput p{b.i, b.j[q], b.dx[q], b.dy[q], b.dz[q], b.step};
-      const std::size_t slot = b.slot + (b.j[q] - b.i - 1);
-      blk[q] = noise_.raw(p, slot);
-      if (two) sc.blk2[q] = noise_.raw2(p, slot);
-    }
-    noise_.zetas(blk, sc.blk2.data(), b.zeta, k);
-    if (b.used) copy_used(blk, sc.blk2.data(), k, b.used);
-    return k;
   }
 
   void pairs_batched(const PairBatch& b, Scratch& sc) {

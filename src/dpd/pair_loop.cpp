@@ -247,17 +247,13 @@ class PairLoop final : public PairForces {
   template <bool Zero>
   void all_rows(const Ctx& c) {
     const std::size_t n = c.s.size(), groups = (n + kGroup - 1) / kGroup;
-    const bool batched = !c.tap;
-    if (batched) round_positions(c.s);
+    round_positions(c.s);
 #pragma omp parallel for num_threads(team_size(threads_)) schedule(dynamic, 1)
     for (std::size_t g = 0; g < groups; ++g) {
       const auto i0 = static_cast<std::uint32_t>(g * kGroup);
       const auto i1 = static_cast<std::uint32_t>(std::min(n, (g + 1) * kGroup));
-      if (batched) {
-        row_group<Zero>(c, i0, i1, omp_get_thread_num());
-        continue;
-      }
-      for (std::uint32_t i = i0; i < i1; ++i) row_all(c, i, omp_get_thread_num());
+      row_group<Zero>(c, i0, i1, omp_get_thread_num());
+      if (c.tap) tap_rows(c, i0, i1, omp_get_thread_num());
     }
   }
 
@@ -279,8 +275,7 @@ class PairLoop final : public PairForces {
     return {xf_.data(), yf_.data(), zf_.data(), xf_[i], yf_[i], zf_[i], Lx, Ly, Lz, threshold_f_};
   }
 
-  // Rows [i0, i1) on a step without a tap of every pair's words: each row's pairs inside r_c collected one row
-  // after another, their ζ in one batch (a row holds ~6 such pairs in the paper's fluid: too few for the
+  // Rows [i0, i1), on every step: each row's pairs inside r_c collected one row after another, their ζ in one batch (a row holds ~6 such pairs in the paper's fluid: too few for the
   // vectorised hash and Box–Muller), then each row's forces. A hash's block is a function of the pair alone and
   // the stream's is its slot's (passed per pair), so the grouping changes no number.
   // Zero (the ζ = 0 baseline): the same path without the noise, so that the two differ by the noise alone.
@@ -431,26 +426,21 @@ class PairLoop final : public PairForces {
     for (std::size_t t = 0; t < k; ++t) out[t] = before + j[t];
   }
 
-  // Row i on a step that taps every pair's words (never the ζ = 0 baseline): every pair's geometry, then the
-  // noise kernel keeps those inside r_c (NoiseKernel::row).
-  void row_all(const Ctx& c, std::uint32_t i, int thread) {
+  // Rows [i0, i1) on a step that taps every pair's words (never the ζ = 0 baseline), once row_group has done
+  // their forces: each row's geometry of all its pairs, whose words the kernel writes at their slots.
+  void tap_rows(const Ctx& c, std::uint32_t i0, std::uint32_t i1, int thread) {
     Scratch& sc = scratch_[std::size_t(thread)];
     const System& s = c.s;
     const std::size_t n = s.size();
-    const std::size_t m = n - i - 1, base = pair_slot(i, i + 1, n);
-    geometry(s.x.data() + i + 1, s.y.data() + i + 1, s.z.data() + i + 1, s.x[i], s.y[i], s.z[i], s.box, m,
-             sc.dx.data(), sc.dy.data(), sc.dz.data(), sc.r2.data());
-    double* dxs = sc.dx.data();
-    double* dys = sc.dy.data();
-    double* dzs = sc.dz.data();
-    double* r2s = sc.r2.data();
-    RowBatch b{i, m, dxs, dys, dzs, r2s, sc.j.data(), k_.rc2(), c.step, base, {nullptr, nullptr}, sc.zeta.data(),
-               c.in_tap ? used_room(sc, m) : nullptr};
-    if (c.tap)
-      for (int w = 0; w < words_; ++w) b.tap[w] = c.tap->words[w].data() + base;
-    const std::size_t k = noise_->row(b, thread);
-    if (c.in_tap) record_row(i, k, sc, 0);
-    forces<false>(c, i, k, sc, 0, rows_[i]);
+    for (std::uint32_t i = i0; i < i1; ++i) {
+      const std::size_t m = n - i - 1, base = pair_slot(i, i + 1, n);
+      sc.grow_pairs(m);
+      geometry(s.x.data() + i + 1, s.y.data() + i + 1, s.z.data() + i + 1, s.x[i], s.y[i], s.z[i], s.box, m,
+               sc.dx.data(), sc.dy.data(), sc.dz.data(), sc.r2.data());
+      RowWords b{i, m, sc.dx.data(), sc.dy.data(), sc.dz.data(), c.step, base, {nullptr, nullptr}};
+      for (int w = 0; w < words_; ++w) b.tap[w] = c.tap->words[std::size_t(w)].data() + base;
+      noise_->row_words(b, thread);
+    }
   }
 
   // Room for the used words of k pairs in sc.

@@ -7,7 +7,8 @@
 //          batch (a hash's block depends on the pair alone and the stream's, which fills a number for every pair
 //          slot each step, on the pair's slot, so the pairs outside r_c need no ζ), compute the group's pair
 //          terms in one vectorised pass, then sum each row's forces in pair order. A tapped step, which records
-//          every pair's words, computes every pair's geometry (NoiseKernel::row). Reactions are added serially.
+//          every pair's words, does the same and then each row's geometry of all its pairs, whose words the
+//          kernel hashes into the tap (NoiseKernel::row_words). Reactions are added serially.
 //   cells: the beads are sorted by cell every step (neighbours.hpp) and copied into sorted arrays, both
 //          shared by the team (every sorted slot written once, so any team gives the same arrays); each cell
 //          does its own pairs and those with its 13 forward neighbours, writing both forces at once; a cell's
@@ -21,9 +22,6 @@
 //          sorting.
 // Both modes turn a batch's blocks into ζ in one call inside the kernel (the feed is switched
 // on once per batch, not per pair), and compute the second blocks only under the blocks feed.
-#include <algorithm>
-#include <bit>
-#include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -54,48 +52,15 @@ inline void geometry(const double* __restrict x, const double* __restrict y, con
   }
 }
 
-// Keeps the pairs with r² < rc2 (NaN fails), in order, moving them to the front in place and writing their
-// partners partner(t) to j; returns how many. About 1 pair in 20 lies inside r_c in the all-pairs mode and 1 in
-// 7 among a cell's candidates, at random: a branch per pair would mispredict, and copying every pair
-// unconditionally (a store whose address depends on the count so far) costs more than it saves. So each run of
-// 64 pairs is first reduced to a bit mask (no branch), then only its set bits are visited.
-template <std::invocable<std::size_t> Partner>
-inline std::size_t compact_in_range(Partner partner, std::size_t m, double rc2, double* dx, double* dy, double* dz,
-                                    double* r2, std::uint32_t* j) {
-  std::size_t k = 0;
-  for (std::size_t base = 0; base < m; base += 64) {
-    const std::size_t n = std::min<std::size_t>(64, m - base);
-    std::uint64_t inside = 0;
-    for (std::size_t t = 0; t < n; ++t) inside |= std::uint64_t(r2[base + t] < rc2) << t;
-    for (; inside != 0; inside &= inside - 1, ++k) {
-      const std::size_t t = base + std::size_t(std::countr_zero(inside));
-      j[k] = partner(t);
-      dx[k] = dx[t], dy[k] = dy[t], dz[k] = dz[t], r2[k] = r2[t];
-    }
-  }
-  return k;
-}
-
-// The all-pairs rows' form: the partners are first_j, first_j + 1, …
-inline std::size_t compact_in_range(std::uint32_t first_j, std::size_t m, double rc2, double* dx, double* dy,
-                                    double* dz, double* r2, std::uint32_t* j) {
-  return compact_in_range([first_j](std::size_t t) { return first_j + std::uint32_t(t); }, m, rc2, dx, dy, dz, r2,
-                          j);
-}
-
-// All mode under a stream or a tapped step, row i: its m partners i + 1 … i + m (slots slot, slot + 1, …), every
-// pair drawn, then those inside r_c kept.
-struct RowBatch {
+// All mode on a tapped step, row i: its m partners i + 1 … i + m (slots slot, slot + 1, …), whose words, inside
+// r_c or not, go to tap[w][t].
+struct RowWords {
   std::uint32_t i;
   std::size_t m;
-  double *dx, *dy, *dz, *r2;  // compacted in place to the pairs with r² < rc2, in order
-  std::uint32_t* j;           // out: those pairs' partners
-  double rc2;
+  const double *dx, *dy, *dz;
   std::uint64_t step;
   std::size_t slot;
-  std::uint64_t* tap[2];  // non-null: every pair's words go to tap[w][t]
-  double* zeta;           // out: ζ of the pairs with r² < rc2, in order
-  std::uint64_t* used;    // non-null: the words ζ came from of the pairs with r² < rc2 (NoiseKernel::used_words)
+  std::uint64_t* tap[2];
 };
 
 // A batch of k pairs (i[t], j[t]) inside r_c: a layer's in cells mode (bead ids in any order: the inputs are made
@@ -127,8 +92,7 @@ class NoiseKernel {
   int used_words() const { return words() * (feed() == rng::Feed::blocks ? 2 : 1); }
   virtual void threads(int count) = 0;
   virtual void begin_step(std::size_t slots) = 0;
-  // Returns the number of pairs inside r_c (their ζ in b.zeta).
-  virtual std::size_t row(const RowBatch& b, int thread) = 0;
+  virtual void row_words(const RowWords& b, int thread) = 0;
   virtual void pairs(const PairBatch& b, int thread) = 0;
   // One pair as the loop sees it (p with i < j): its words (words() of them) and ζ.
   virtual void pair(const rng::PairInput& p, std::size_t slot, std::uint64_t* words, double& zeta) const = 0;
