@@ -124,6 +124,8 @@ class PairLoop final : public PairForces {
     RawTap* tap = nullptr;
     if (tap_raw && !zero_) {
       tap = &taps.raw.emplace_back();
+      // A tap's storage given back (Taps::recycled) serves again, rather than fresh pages every tapped step.
+      if (!taps.recycled.empty()) *tap = std::move(taps.recycled.back()), taps.recycled.pop_back();
       tap->step = static_cast<std::int64_t>(step);
       tap->words_per_pair = words_;
     }
@@ -134,8 +136,10 @@ class PairLoop final : public PairForces {
     if (mode_ == PairMode::all) {
       const std::size_t slots = n * (n - 1) / 2;
       if (noise_->stream()) noise_->begin_step(slots);
+      // Every slot is written (tap_rows): storage of the right length needs no clearing.
       if (tap)
-        for (int w = 0; w < words_; ++w) tap->words[w].assign(slots, 0);
+        for (int w = 0; w < words_; ++w)
+          if (tap->words[w].size() != slots) tap->words[w].assign(slots, 0);
       if (zero_)
         all_rows<true>(c);
       else
@@ -797,6 +801,8 @@ class PairLoop final : public PairForces {
     sums.conf_laplacian *= 2.0;  // each pair's ∇²u counts for both its beads
     for (const double f2 : layer_force2_) sums.conf_force2 += f2;
     sums.configurational = cx.conf;
+    if (tap)
+      for (int w = 0; w < words_; ++w) cx.tap->words[w].clear();
     if (tap)
       for (int c = 0; c < nc; ++c)
         for (int w = 0; w < words_; ++w)

@@ -185,6 +185,9 @@ RunResult run_water(const WaterConfig& in, const RunHooks& hooks) {
     pair->tap_in_range(current >= cfg.taps.in_range_first && current <= cfg.taps.in_range_last);
     const ForceSums f = pair->compute(sys, v, static_cast<std::uint64_t>(current), tap_raw, tap_series,
                                       obs.tap_zeta() && production, r.taps);
+    if (tap_raw && hooks.raw && !r.taps.raw.empty() && r.taps.raw.back().step == current &&
+        hooks.raw(r.taps.raw.back()))
+      r.taps.recycled.push_back(std::move(r.taps.raw.back())), r.taps.raw.pop_back();
     counted.seconds += seconds_between(t0, SceneClock::now());
     // Once per step, on the positions the forces just used (outside the force time).
     if (tracker && production && cfg.integrator != Integrator::shardlow && current > tracked)
@@ -205,6 +208,7 @@ RunResult run_water(const WaterConfig& in, const RunHooks& hooks) {
       },
       obs, hooks);
   pair->finish_taps(r.taps);
+  r.taps.recycled.clear();
   put_scene_run(r, run);
   obs.finish(s);
   r.zeta_correlation = zeta_correlation(cfg, obs.tap_zeta(), tracker);

@@ -1,5 +1,6 @@
-// One cell, end to end: plan the taps, run the engine, and hand the taps to the tests. The taps are dropped
-// as soon as the tests have seen them (they are the bulk of a cell's memory). A bilayer cell is its run alone.
+// One cell, end to end: plan the taps, run the engine, and hand the taps to the tests. The χ² steps are tested
+// as the engine taps them, and only the NIST steps' words are kept to the end of the run (the bulk of a cell's
+// memory), dropped as soon as the battery has read them. A bilayer cell is its run alone.
 #include "dpdrng/dpd/bilayer.hpp"
 #include "dpdrng/dpd/water.hpp"
 #include "dpdrng/rng/stream.hpp"
@@ -17,7 +18,10 @@ CellResult measure_cell(const Cell& cell, const StudyConfig& config, int threads
   const rng::GeneratorSpec spec = rng::validated(rng::GeneratorSpec{cell.generator, cell.rounds, rng::kPaperTeaKey});
   const int words = cell.reference ? 1 : rng::words_per_call(spec);
   const TapPlan plan = plan_taps(cell, config, words);
-  dpd::RunResult run = dpd::run_water(engine_config(cell, config, threads, plan));
+  Chi2Steps chi2(plan, config.tests);
+  dpd::RunHooks hooks;
+  hooks.raw = [&chi2](const dpd::RawTap& tap) { return chi2.take(tap); };
+  dpd::RunResult run = dpd::run_water(engine_config(cell, config, threads, plan), hooks);
   record_run(run, out);
   // A blown-up run still has taps up to the blow-up; its tests would describe a broken trajectory, so the
   // cell keeps the observables up to that step and the reason, and skips the tests.
@@ -27,7 +31,7 @@ CellResult measure_cell(const Cell& cell, const StudyConfig& config, int threads
       out.notes["tests"] = "not run: " + cell.integrator + " draws no numbers in the tapped pair loop";
     return out;
   }
-  record_chi2(run.taps, plan, config.tests, out);
+  chi2.record(out);
   record_ttest(run.taps, config.tests, out);
   record_correlations(run.taps, config.tests, out);
   if (cell.nist) record_nist(run.taps, plan, config.tests, threads, out);

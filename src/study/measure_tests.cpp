@@ -44,23 +44,28 @@ const std::vector<double>& to_unit(const std::vector<std::uint64_t>& words, std:
 
 }  // namespace
 
-void record_chi2(const dpd::Taps& taps, const TapPlan& plan, const TestParams& tests, CellResult& out) {
-  if (plan.chi2_steps.empty()) return;
-  int wpp = 0;
-  for (const auto& t : taps.raw) wpp = std::max(wpp, t.words_per_pair);
-  for (int k = 0; k < wpp; ++k) {
+bool Chi2Steps::take(const dpd::RawTap& tap) {
+  const bool nist = std::binary_search(plan_.nist_steps.begin(), plan_.nist_steps.end(), tap.step);
+  if (!std::binary_search(plan_.chi2_steps.begin(), plan_.chi2_steps.end(), tap.step)) return false;
+  words_ = std::max(words_, tap.words_per_pair);
+  for (int k = 0; k < tap.words_per_pair; ++k)
+    results_[std::size_t(k)].push_back(stats::chi2_uniform_words(tap.words[std::size_t(k)], {0, tests_.alpha}));
+  return !nist;
+}
+
+void Chi2Steps::record(CellResult& out) const {
+  for (int k = 0; k < words_; ++k) {
+    const std::vector<stats::Chi2Result>& results = results_[std::size_t(k)];
     std::vector<stats::Verdict> verdicts;
     std::vector<double> p, stat;
-    for (const auto& t : taps.raw) {
-      if (!std::binary_search(plan.chi2_steps.begin(), plan.chi2_steps.end(), t.step)) continue;
-      const stats::Chi2Result r = stats::chi2_uniform_words(t.words[std::size_t(k)], {0, tests.alpha});
+    for (const stats::Chi2Result& r : results) {
       verdicts.push_back(r.verdict);
       p.push_back(r.verdict == stats::Verdict::not_applicable ? NAN : r.p_value);
       stat.push_back(r.statistic);
-      if (verdicts.size() == 1) out.scalars[std::string("chi2.") + stream_name(wpp, k) + ".bins"] = r.bins;
     }
-    const std::string s = stream_name(wpp, k);
-    record_fraction("chi2." + s, verdicts, tests.alpha, out);
+    const std::string s = stream_name(words_, k);
+    if (!results.empty()) out.scalars["chi2." + s + ".bins"] = results.front().bins;
+    record_fraction("chi2." + s, verdicts, tests_.alpha, out);
     out.series["chi2/" + s + "/p"] = p;
     out.series["chi2/" + s + "/statistic"] = stat;
   }

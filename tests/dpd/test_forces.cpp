@@ -211,6 +211,35 @@ TEST(PairLoop, PairSeriesKeepEveryProductionStepInOrder) {
   }
 }
 
+// A raw hook sees every raw tap as its step is done, with the words a run without it keeps; what it takes is not
+// kept, and the storage it gives back serves the later taps: all mode writes every slot over it, cells mode
+// (125 beads: three cells of r_c a side) starts each step's list afresh.
+TEST(PairLoop, ARawHookSeesEveryTapAndKeepsWhatItLeaves) {
+  for (PairMode mode : {PairMode::all, PairMode::cells}) {
+    WaterConfig cfg = tapped_run({"tea64", 1}, 12, 2, {3, 5, 6, 9, 12}, {});
+    cfg.particles = 125;
+    cfg.pairs = mode;
+    const RunResult plain = run_water(cfg);
+    std::vector<RawTap> seen;
+    RunHooks hooks;
+    hooks.raw = [&seen](const RawTap& tap) {
+      seen.push_back(tap);
+      return tap.step != 9;
+    };
+    const RunResult hooked = run_water(cfg, hooks);
+    ASSERT_EQ(plain.taps.raw.size(), 5u);
+    ASSERT_EQ(seen.size(), 5u);
+    for (std::size_t k = 0; k < seen.size(); ++k) {
+      EXPECT_EQ(seen[k].step, plain.taps.raw[k].step);
+      EXPECT_EQ(seen[k].words, plain.taps.raw[k].words) << to_string(mode) << " step " << seen[k].step;
+    }
+    ASSERT_EQ(hooked.taps.raw.size(), 1u);
+    EXPECT_EQ(hooked.taps.raw[0].step, 9);
+    EXPECT_EQ(hooked.taps.raw[0].words, plain.taps.raw[3].words);
+    EXPECT_TRUE(hooked.taps.recycled.empty());
+  }
+}
+
 namespace {
 struct Snapshot {
   std::vector<double> x, v;

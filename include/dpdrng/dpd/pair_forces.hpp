@@ -91,6 +91,8 @@ struct Taps {
   std::vector<RawTap> raw;
   std::vector<PairSeries> series;
   InRangeTap in_range;  // the last compute() under tap_in_range(true)
+  // Raw taps whose words a consumer has read and given back: the next raw steps reuse their storage.
+  std::vector<RawTap> recycled;
 };
 
 // Velocities used by the dissipative force (Groot–Warren's predicted ṽ).

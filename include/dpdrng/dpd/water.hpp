@@ -26,6 +26,10 @@ struct RunHooks {
   std::function<void(std::int64_t step, const System& s)> observe;
   // Called with the pairs inside r_c of each step of cfg.taps.in_range that passed the guards, in step order.
   std::function<void(const InRangeTap& tap)> in_range;
+  // Called with each raw tap (cfg.taps.raw_steps) as soon as its step's forces are done, while its words are in
+  // cache. Returning true takes it: it is not kept in RunResult::taps.raw and its storage serves the next raw
+  // step. Unset, or returning false: the tap is kept.
+  std::function<bool(const RawTap& tap)> raw;
 };
 
 RunResult run_water(const WaterConfig& cfg, const RunHooks& hooks = {});

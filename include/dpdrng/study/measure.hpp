@@ -17,6 +17,7 @@
 //            (P_xx+P_yy)/2]), tension_conservative, thickness (head peak to peak), head_separation, tail_order;
 //            lipids_out_max, momentum_drift; series profile/z (relative to the midplane), profile/head,
 //            profile/tail, profile/water, order_by_bond, series/step, series/temperature, series/tension
+#include <array>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -24,6 +25,7 @@
 #include "dpdrng/dpd/bilayer.hpp"
 #include "dpdrng/dpd/config.hpp"
 #include "dpdrng/dpd/result.hpp"
+#include "dpdrng/stats/chi2.hpp"
 #include "dpdrng/study/cell_result.hpp"
 #include "dpdrng/study/config.hpp"
 
@@ -52,9 +54,22 @@ void record_run(const dpd::RunResult& run, CellResult& out);
 // Its error-budget part: configurational and per-component temperatures, per-component pressures with their
 // standard errors, the w_R²-weighted ζ power and the ζ correlations (scalars named in measure_engine.cpp).
 void record_physics(const dpd::RunResult& run, CellResult& out);
-// χ² over the tapped steps (one test per step and output word), lag-1 t over the tapped pairs, and the
-// cross-pair / across-time correlations of ζ.
-void record_chi2(const dpd::Taps& taps, const TapPlan& plan, const TestParams& tests, CellResult& out);
+// χ² over the tapped steps, one test per step and output word, taken while the engine runs: take() is the run's
+// RunHooks::raw (it tests a χ² step while its words are in cache, and gives back every step the NIST battery does
+// not read), record() writes the pass fractions and each step's P-value and statistic.
+class Chi2Steps {
+ public:
+  Chi2Steps(const TapPlan& plan, const TestParams& tests) : plan_(plan), tests_(tests) {}
+  bool take(const dpd::RawTap& tap);
+  void record(CellResult& out) const;
+
+ private:
+  const TapPlan& plan_;
+  TestParams tests_;
+  int words_ = 0;
+  std::array<std::vector<stats::Chi2Result>, 2> results_;
+};
+// Lag-1 t over the tapped pairs, and the cross-pair / across-time correlations of ζ.
 void record_ttest(const dpd::Taps& taps, const TestParams& tests, CellResult& out);
 void record_correlations(const dpd::Taps& taps, const TestParams& tests, CellResult& out);
 // The NIST battery on the bits of the tapped NIST steps, with the second-level counts.
