@@ -279,9 +279,10 @@ class PairLoop final : public PairForces {
     return {xf_.data(), yf_.data(), zf_.data(), xf_[i], yf_[i], zf_[i], Lx, Ly, Lz, threshold_f_};
   }
 
-  // Rows [i0, i1), on every step: each row's pairs inside r_c collected one row after another, their ζ in one batch (a row holds ~6 such pairs in the paper's fluid: too few for the
-  // vectorised hash and Box–Muller), then each row's forces. A hash's block is a function of the pair alone and
-  // the stream's is its slot's (passed per pair), so the grouping changes no number.
+  // Rows [i0, i1), on every step: each row's pairs inside r_c collected one row after another, their ζ in one
+  // batch (a row holds ~6 such pairs in the paper's fluid: too few for the vectorised hash and Box–Muller), then
+  // each row's forces. A hash's block is a function of the pair alone and the stream's is its slot's (passed per
+  // pair), so the grouping changes no number.
   // Zero (the ζ = 0 baseline): the same path without the noise, so that the two differ by the noise alone.
   template <bool Zero>
   void row_group(const Ctx& c, std::uint32_t i0, std::uint32_t i1, int thread) {

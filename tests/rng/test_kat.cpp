@@ -230,6 +230,27 @@ TEST(KatMt19937, OwnEngineIsTheStandardsSequence) {
   bulk.fill64(words.data(), 3);
   bulk.fill64(words.data() + 3, words.size() - 3);
   for (std::size_t t = 0; t < words.size(); ++t) ASSERT_EQ(words[t], one.next64()) << t;
+  // From an odd draw on (the pairs straddle each regeneration), in bulk and before tempering: temper64 of each
+  // untempered word is the word.
+  Mt19937 odd(78), odd_raw(78), odd_one(78);
+  odd.engine(), odd_raw.engine(), odd_one.engine();
+  std::vector<std::uint64_t> tempered(1500), raw(1500);
+  odd.fill64(tempered.data(), tempered.size());
+  odd_raw.fill64_untempered(raw.data(), raw.size());
+  for (std::size_t t = 0; t < raw.size(); ++t) {
+    const std::uint64_t w = odd_one.next64();
+    ASSERT_EQ(tempered[t], w) << t;
+    ASSERT_EQ(Mt19937::temper64(raw[t]), w) << t;
+  }
+}
+
+// temper64, both halves tempered in whole-word operations, is the engine's 32-bit tempering of each half.
+TEST(KatMt19937, WholeWordTemperingIsEachHalfs) {
+  std::mt19937_64 pick(3);
+  for (int k = 0; k < 100000; ++k) {
+    const std::uint64_t w = pick();
+    ASSERT_EQ(Mt19937::temper64(w), join32(Mt19937Engine::temper(hi32(w)), Mt19937Engine::temper(lo32(w)))) << w;
+  }
 }
 
 // Matsumoto & Nishimura's init_by_array (mt19937ar.c, 2002), written from the published algorithm, to put the

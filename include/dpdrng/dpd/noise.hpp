@@ -139,15 +139,17 @@ struct StreamNoise {
 
   StreamNoise(std::uint64_t seed, rng::Feed feed) : mt(seed), feed_(feed) {}
   rng::Feed feed() const { return feed_; }
+  // Every slot's words of the step, untempered: a slot is tempered when a pair reads it (~1 in 20 in the paper's
+  // fluid, every one on a tapped step).
   void begin_step(std::size_t slots) {
     buffer.resize(slots);
-    mt.fill64(buffer.data(), slots);
+    mt.fill64_untempered(buffer.data(), slots);
     if (feed_ != rng::Feed::blocks) return;
     buffer2.resize(slots);
-    mt.fill64(buffer2.data(), slots);
+    mt.fill64_untempered(buffer2.data(), slots);
   }
-  Block raw(const rng::PairInput&, std::size_t k) const { return {buffer[k]}; }
-  Block raw2(const rng::PairInput&, std::size_t k) const { return {buffer2[k]}; }
+  Block raw(const rng::PairInput&, std::size_t k) const { return {rng::Mt19937::temper64(buffer[k])}; }
+  Block raw2(const rng::PairInput&, std::size_t k) const { return {rng::Mt19937::temper64(buffer2[k])}; }
   void zetas(const Block* a, const Block* b, double* z, std::size_t m) const { feed_zetas<D>(feed_, a, b, z, m); }
 };
 

@@ -64,7 +64,7 @@ struct RowWords {
 };
 
 // A batch of k pairs (i[t], j[t]) inside r_c: a layer's in cells mode (bead ids in any order: the inputs are made
-// canonical), a group of rows' in all mode under a hash.
+// canonical), a group of rows' in all mode.
 struct PairBatch {
   const std::uint32_t* i;
   const std::uint32_t* j;

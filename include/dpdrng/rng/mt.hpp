@@ -3,11 +3,13 @@
 // of std::mt19937 (and of GSL's gsl_rng_mt19937) for the same 32-bit seed. It is a stream, not a hash: it
 // cannot be keyed by a pair, so the engine draws its numbers in a fixed pair order once per step, some 65 000
 // draws a step in the paper's fluid; fill() regenerates the state 624 words at a time and tempers whole runs
-// of it in loops the compiler vectorises, where a draw at a time costs a call, a bounds check and a branch.
+// of it in loops the compiler vectorises, where a draw at a time costs a call, a bounds check and a branch. The
+// engine keeps a pair's words as drawn, untempered, until a pair inside r_c reads them (fill64_untempered).
 #include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 
 #include "dpdrng/rng/words.hpp"
 
@@ -28,28 +30,31 @@ class Mt19937Engine {
   // The next n draws, as n calls would give them.
   void fill(std::uint32_t* out, std::size_t n) {
     while (n > 0) {
-      if (next_ == kN) twist();
-      const std::size_t k = std::min(n, std::size_t(kN - next_));
-      const std::uint32_t* from = s_.data() + next_;
-      for (std::size_t t = 0; t < k; ++t) out[t] = temper(from[t]);
-      next_ += int(k), out += k, n -= k;
+      const std::span<const std::uint32_t> r = run(n);
+      for (std::size_t t = 0; t < r.size(); ++t) out[t] = temper(r[t]);
+      out += r.size(), n -= r.size();
     }
   }
   void discard(unsigned long long n) {
-    while (n > 0) {
-      if (next_ == kN) twist();
-      const auto k = std::min(n, static_cast<unsigned long long>(kN - next_));
-      next_ += int(k), n -= k;
-    }
+    while (n > 0) n -= run(std::size_t(std::min<unsigned long long>(n, kN))).size();
   }
-
- private:
+  // The next draws before tempering (temper() of each is the draw), as many as the state holds up to n (n >= 1):
+  // a run of consecutive state words, valid until the next call.
+  std::span<const std::uint32_t> run(std::size_t n) {
+    if (next_ == kN) twist();
+    const std::size_t k = std::min(n, std::size_t(kN - next_));
+    const std::span<const std::uint32_t> r(s_.data() + next_, k);
+    next_ += int(k);
+    return r;
+  }
   static std::uint32_t temper(std::uint32_t y) {
     y ^= y >> 11;
     y ^= (y << 7) & 0x9d2c5680u;
     y ^= (y << 15) & 0xefc60000u;
     return y ^ (y >> 18);
   }
+
+ private:
   static std::uint32_t mix(std::uint32_t upper, std::uint32_t lower, std::uint32_t far) {
     const std::uint32_t y = (upper & 0x80000000u) | (lower & 0x7fffffffu);
     return far ^ (y >> 1) ^ ((y & 1u) * 0x9908b0dfu);
@@ -82,13 +87,31 @@ struct Mt19937 {
   }
   // n successive next64() words.
   void fill64(std::uint64_t* out, std::size_t n) {
-    std::array<std::uint32_t, 2 * Mt19937Engine::kN> half;
+    fill64_untempered(out, n);
+    for (std::size_t t = 0; t < n; ++t) out[t] = temper64(out[t]);
+  }
+  // The same words before tempering, straight from the state: temper64(out[t]) is fill64's out[t]. A stream whose
+  // words are mostly never read (the pairs outside r_c) tempers only those it reads.
+  void fill64_untempered(std::uint64_t* out, std::size_t n) {
     while (n > 0) {
-      const std::size_t k = std::min(n, std::size_t(Mt19937Engine::kN));
-      engine.fill(half.data(), 2 * k);
-      for (std::size_t t = 0; t < k; ++t) out[t] = join32(half[2 * t], half[2 * t + 1]);
+      const std::span<const std::uint32_t> r = engine.run(2 * n);
+      const std::size_t k = r.size() / 2;
+      for (std::size_t t = 0; t < k; ++t) out[t] = join32(r[2 * t], r[2 * t + 1]);
       out += k, n -= k;
+      // A word left over at the end of the state: its pair's second word opens the next state.
+      if (r.size() % 2 == 1) {
+        const std::uint32_t hi = r.back();  // read before the next run regenerates the state
+        *out++ = join32(hi, engine.run(1)[0]), --n;
+      }
     }
+  }
+  // Mt19937Engine::temper on both halves at once: each shift's bits that cross into the other half are masked
+  // off, as a 32-bit shift drops them; four operations on whole words, so a loop of them vectorises.
+  static constexpr std::uint64_t temper64(std::uint64_t w) {
+    w ^= (w >> 11) & 0x001fffff001fffffull;
+    w ^= (w << 7) & 0x9d2c56809d2c5680ull;
+    w ^= (w << 15) & 0xefc60000efc60000ull;
+    return w ^ ((w >> 18) & 0x00003fff00003fffull);
   }
 };
 
