@@ -95,6 +95,7 @@ void record_correlations(const dpd::Taps& taps, const TestParams& tests, CellRes
   if (taps.series.size() < 2) return;
   const std::size_t steps = taps.series.front().zeta.size();
   std::vector<double> zeta;
+  zeta.reserve(taps.series.size() * steps);
   for (const auto& ps : taps.series) {
     if (ps.zeta.size() != steps) return;  // an unstable run can leave ragged series; nothing sound to pool
     zeta.insert(zeta.end(), ps.zeta.begin(), ps.zeta.end());
