@@ -3,8 +3,9 @@
 // of std::mt19937 (and of GSL's gsl_rng_mt19937) for the same 32-bit seed. It is a stream, not a hash: it
 // cannot be keyed by a pair, so the engine draws its numbers in a fixed pair order once per step, some 65 000
 // draws a step in the paper's fluid; fill() regenerates the state 624 words at a time and tempers whole runs
-// of it in loops the compiler vectorises, where a draw at a time costs a call, a bounds check and a branch. The
-// engine keeps a pair's words as drawn, untempered, until a pair inside r_c reads them (fill64_untempered).
+// of it in loops the compiler vectorises, where a draw at a time costs a call, a bounds check and a branch.
+// fill64_untempered leaves the tempering to a caller that reads few of its words (the engine's reference reads
+// those of the pairs inside r_c, about 1 in 20).
 #include <algorithm>
 #include <array>
 #include <cstddef>
