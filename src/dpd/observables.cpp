@@ -1,8 +1,14 @@
 #include "dpdrng/dpd/observables.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstring>
 #include <numbers>
+
+#if defined(__AVX512F__)
+#include <immintrin.h>
+#endif
 
 #include "dpdrng/common/numbers.hpp"
 #include "dpdrng/dpd/line_fit.hpp"
@@ -148,8 +154,9 @@ namespace msd_sums {
 // for each origin and lag, their total over all coordinates and their total over each group of beads, each
 // added coordinate after coordinate in order (the group's inside the total's). The frames are transposed a
 // chunk of coordinates at a time (coordinate-major), so that one coordinate's values at all the lags of an
-// origin are contiguous and the loop over the lags vectorises; every lag's sums still see the coordinates one
-// after another, so they hold the bits of a loop over one lag at a time.
+// origin are contiguous; a block of lags keeps its two sums in registers while the chunk's coordinates pass.
+// Every lag's sums still see the coordinates one after another, so they hold the bits of a loop over one lag at
+// a time.
 class LagSums {
  public:
   LagSums(const std::vector<std::vector<double>>& frames, std::size_t stride, std::size_t lmax,
@@ -166,15 +173,14 @@ class LagSums {
     const std::size_t w = lmax_ + 1, origins = o1 - o0;
     std::vector<double> d2(origins * w, 0.0), dg(origins * w, 0.0);
     const std::size_t chunk = std::max<std::size_t>(1, (std::size_t{1} << 15) / nf_);
-    std::vector<double> t(chunk * nf_);
+    std::vector<double> t(chunk * nf_ + kBlock);  // the last block of lags may read kBlock past the end
     for (std::size_t g = 0; g + 1 < first_.size(); ++g) {
       for (std::size_t k0 = 3 * first_[g], end = 3 * first_[g + 1]; k0 < end; k0 += chunk) {
         const std::size_t k1 = std::min(end, k0 + chunk);
         transpose(k0, k1, t.data());
         for (std::size_t o = o0; o < o1; ++o)
-          for (std::size_t k = k0; k < k1; ++k)
-            accumulate(t.data() + (k - k0) * nf_ + o * stride_, lags(o), d2.data() + (o - o0) * w,
-                       dg.data() + (o - o0) * w);
+          accumulate(t.data() + o * stride_, nf_, k1 - k0, lags(o), d2.data() + (o - o0) * w,
+                     dg.data() + (o - o0) * w);
       }
       for (std::size_t o = o0; o < o1; ++o)
         for (std::size_t l = 1; l <= lags(o); ++l) gsum[g][l] += dg[(o - o0) * w + l], dg[(o - o0) * w + l] = 0;
@@ -192,23 +198,53 @@ class LagSums {
   // The lags of origin o: up to lmax, and within the frames.
   std::size_t lags(std::size_t o) const { return std::min(lmax_, nf_ - 1 - o * stride_); }
 
-  // Coordinates [k0, k1) of every frame into t, coordinate-major.
+  // Coordinates [k0, k1) of every frame into t, coordinate-major; eight frames at a time, so that each store
+  // fills a cache line's worth of t rather than one value a line.
   void transpose(std::size_t k0, std::size_t k1, double* t) const {
-    for (std::size_t f = 0; f < nf_; ++f) {
-      const double* frame = frames_[f].data();
-      for (std::size_t k = k0; k < k1; ++k) t[(k - k0) * nf_ + f] = frame[k];
+    for (std::size_t f0 = 0; f0 < nf_; f0 += 8) {
+      const std::size_t f1 = std::min(nf_, f0 + 8);
+      for (std::size_t k = k0; k < k1; ++k)
+        for (std::size_t f = f0; f < f1; ++f) t[(k - k0) * nf_ + f] = frames_[f][k];
     }
   }
 
-  // One coordinate: at[0] at the origin, at[l] a lag l later.
-  static void accumulate(const double* __restrict at, std::size_t lags, double* __restrict d2,
-                         double* __restrict dg) {
-    const double a = at[0];
-    for (std::size_t l = 1; l <= lags; ++l) {
-      const double x = (at[l] - a) * (at[l] - a);
-      d2[l] += x, dg[l] += x;
-    }
+  using Lanes = double __attribute__((vector_size(64)));  // GNU vector: any target, split where 512 bits lack
+  static constexpr std::size_t kLanes = 8, kBlock = 4 * kLanes;
+
+  // Coordinates [0, kn) of one origin, coordinate k's values at at[k·nf] (the origin) and at[k·nf + l] (a lag
+  // l later): lags [1, lags] into d2 and dg, kBlock lags at a time in registers. The last lags go as a whole
+  // block on copies of their sums, whose lanes past `lags` (reading the next values in memory) are dropped.
+  static void accumulate(const double* at, std::size_t nf, std::size_t kn, std::size_t lags, double* d2,
+                         double* dg) {
+    std::size_t l = 1;
+    for (; l + kBlock <= lags + 1; l += kBlock) block(at + l, at, nf, kn, d2 + l, dg + l);
+    if (l > lags) return;
+    const std::size_t r = lags + 1 - l;
+    double s[kBlock] = {}, g[kBlock] = {};
+    std::copy_n(d2 + l, r, s), std::copy_n(dg + l, r, g);
+    block(at + l, at, nf, kn, s, g);
+    std::copy_n(s, r, d2 + l), std::copy_n(g, r, dg + l);
   }
+
+  // kBlock lags from `lag` on (at[k·nf] the origin's coordinate k).
+  static void block(const double* lag, const double* at, std::size_t nf, std::size_t kn, double* d2, double* dg) {
+    Lanes s[4], g[4];
+    for (std::size_t v = 0; v < 4; ++v) s[v] = load(d2 + v * kLanes), g[v] = load(dg + v * kLanes);
+    for (std::size_t k = 0; k < kn; ++k) {
+      const double a = at[k * nf];
+      for (std::size_t v = 0; v < 4; ++v) {
+        const Lanes d = load(lag + k * nf + v * kLanes) - a, x = d * d;
+        s[v] += x, g[v] += x;
+      }
+    }
+    for (std::size_t v = 0; v < 4; ++v) store(d2 + v * kLanes, s[v]), store(dg + v * kLanes, g[v]);
+  }
+  static Lanes load(const double* p) {
+    Lanes v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+  }
+  static void store(double* p, const Lanes& v) { std::memcpy(p, &v, sizeof v); }
 
   const std::vector<std::vector<double>>& frames_;
   std::size_t nf_, stride_, lmax_;
@@ -281,43 +317,63 @@ void r2_from(const Box& box, double xi, double yi, double zi, const double* __re
   }
 }
 
-// Counts r² values into bins of r up to r_max. One spare bin collects the values beyond r_max: about half of
-// all pairs in a small box, at random, so a branch per pair would mispredict; the bins are found in a loop
-// without one, and it vectorises. Four histograms, summed at the end, take consecutive values in turn, so that
-// increments of one bin do not wait for each other.
+// Counts r² values into bins of r up to r_max. About half of all pairs in a small box lie beyond r_max, at
+// random, so a branch per pair would mispredict: the values inside are first moved to the front (inside), then
+// binned in a loop without a branch that vectorises. Four histograms, summed at the end, take consecutive values
+// in turn, so that increments of one bin do not wait for each other.
 class Binner {
  public:
   Binner(int bins, double rmax)
-      : r2max_(rmax * rmax), inv_dr_(bins / rmax), last_(bins - 1), spare_(bins), counts_(4 * (std::size_t(bins) + 1), 0) {}
+      : r2max_(rmax * rmax), inv_dr_(bins / rmax), last_(bins - 1), width_(std::size_t(bins)),
+        counts_(4 * std::size_t(bins), 0) {}
   void add(const double* r2, std::size_t m) {
-    bin_.resize(m);
+    in_.resize(m + kLanes);
+    const std::size_t k = inside(r2, m, r2max_, in_.data());
+    bin_.resize(k);
+    const double* in = in_.data();
     std::int32_t* out = bin_.data();
-    const double r2max = r2max_, inv_dr = inv_dr_;
-    const std::int32_t last = last_, spare = spare_;  // locals: the bin stores could alias the members
-    for (std::size_t t = 0; t < m; ++t) {
-      const bool inside = r2[t] < r2max;
-      const std::int32_t b = std::int32_t(std::sqrt(inside ? r2[t] : 0.0) * inv_dr);
-      out[t] = inside ? std::min(last, b) : spare;
-    }
-    const std::size_t w = std::size_t(spare_) + 1;
+    const double inv_dr = inv_dr_;
+    const std::int32_t last = last_;  // locals: the bin stores could alias the members
+    for (std::size_t t = 0; t < k; ++t) out[t] = std::min(last, std::int32_t(std::sqrt(in[t]) * inv_dr));
+    const std::size_t w = width_;
     std::uint64_t* c = counts_.data();
     std::size_t t = 0;
-    for (; t + 4 <= m; t += 4)
+    for (; t + 4 <= k; t += 4)
       ++c[std::size_t(out[t])], ++c[w + std::size_t(out[t + 1])], ++c[2 * w + std::size_t(out[t + 2])],
           ++c[3 * w + std::size_t(out[t + 3])];
-    for (; t < m; ++t) ++c[std::size_t(out[t])];
+    for (; t < k; ++t) ++c[std::size_t(out[t])];
   }
-  // Adds the counts inside r_max to total.
+  // Adds the counts to total.
   void add_to(std::vector<std::uint64_t>& total) const {
-    const std::size_t w = std::size_t(spare_) + 1;
+    const std::size_t w = width_;
     for (std::size_t b = 0; b < total.size(); ++b)
       total[b] += counts_[b] + counts_[w + b] + counts_[2 * w + b] + counts_[3 * w + b];
   }
 
  private:
+  static constexpr std::size_t kLanes = 8;  // out's room past the m values: inside's whole-vector stores
+
+  // The values of r2[0, m) below r2max, in order, to out; returns their number.
+  static std::size_t inside(const double* r2, std::size_t m, double r2max, double* out) {
+    std::size_t n = 0, t = 0;
+#if defined(__AVX512F__)
+    const __m512d lim = _mm512_set1_pd(r2max);
+    for (; t + kLanes <= m; t += kLanes) {
+      const __m512d v = _mm512_loadu_pd(r2 + t);
+      const __mmask8 below = _mm512_cmp_pd_mask(v, lim, _CMP_LT_OQ);
+      _mm512_storeu_pd(out + n, _mm512_maskz_compress_pd(below, v));
+      n += std::size_t(std::popcount(unsigned(below)));
+    }
+#endif
+    for (; t < m; ++t) out[n] = r2[t], n += r2[t] < r2max;
+    return n;
+  }
+
   double r2max_, inv_dr_;
-  std::int32_t last_, spare_;
+  std::int32_t last_;
+  std::size_t width_;
   std::vector<std::uint64_t> counts_;
+  std::vector<double> in_;
   std::vector<std::int32_t> bin_;
 };
 
