@@ -261,15 +261,28 @@ class PairLoop final : public PairForces {
     }
   }
 
-  // The positions rounded to float for the rows' prefilter (pair_filter::append_rounded), and its threshold.
+  // The positions for the rows' prefilter: on the 16-bit grid where it serves (pair_filter::grid_serves),
+  // rounded to float otherwise (pair_filter::append_rounded), with the threshold of each.
   void round_positions(const System& s) {
     const std::size_t n = s.size();
-    for (auto* a : {&xf_, &yf_, &zf_}) a->resize(n + pair_filter::kSlackF);
     double extent = std::max({s.box.L[0], s.box.L[1], s.box.L[2]});
-    for (std::size_t i = 0; i < n; ++i) {
-      xf_[i] = static_cast<float>(s.x[i]), yf_[i] = static_cast<float>(s.y[i]), zf_[i] = static_cast<float>(s.z[i]);
-      extent = std::max({extent, std::abs(s.x[i]), std::abs(s.y[i]), std::abs(s.z[i])});
+    for (const auto* a : {&s.x, &s.y, &s.z})
+      for (std::size_t i = 0; i < n; ++i) extent = std::max(extent, std::abs((*a)[i]));
+    grid_ = pair_filter::grid_serves(s.box, k_.rc, extent);
+    if (grid_) {
+      for (std::size_t a = 0; a < 3; ++a) {
+        const double scale = 65536.0 / s.box.L[a];
+        const std::vector<double>& p = a == 0 ? s.x : a == 1 ? s.y : s.z;
+        std::vector<std::uint16_t>& q = grid_pos_[a];
+        q.resize(n + pair_filter::kSlackG);
+        for (std::size_t i = 0; i < n; ++i) q[i] = pair_filter::to_grid(p[i], scale);
+      }
+      threshold_g_ = pair_filter::grid_threshold(k_.rc, 65536.0 / std::min({s.box.L[0], s.box.L[1], s.box.L[2]}));
+      return;
     }
+    for (auto* a : {&xf_, &yf_, &zf_}) a->resize(n + pair_filter::kSlackF);
+    for (std::size_t i = 0; i < n; ++i)
+      xf_[i] = static_cast<float>(s.x[i]), yf_[i] = static_cast<float>(s.y[i]), zf_[i] = static_cast<float>(s.z[i]);
     threshold_f_ = pair_filter::rounded_threshold(k_.rc2(), extent);
   }
 
@@ -277,6 +290,22 @@ class PairLoop final : public PairForces {
   pair_filter::Rounded rounded(const Box& box, std::uint32_t i) const {
     const auto Lx = static_cast<float>(box.L[0]), Ly = static_cast<float>(box.L[1]), Lz = static_cast<float>(box.L[2]);
     return {xf_.data(), yf_.data(), zf_.data(), xf_[i], yf_[i], zf_[i], Lx, Ly, Lz, threshold_f_};
+  }
+  pair_filter::Grid16 on_grid(std::uint32_t i) const {
+    const auto& [x, y, z] = grid_pos_;
+    return {x.data(), y.data(), z.data(), x[i], y[i], z[i], threshold_g_};
+  }
+
+  // Row i's candidates after it, [i + 1, n), through the step's prefilter and the exact test, appended to sc
+  // from `off` on; returns the new count.
+  std::size_t append_row(const System& s, std::uint32_t i, const pair_filter::Centre& ctr, Scratch& sc,
+                         std::size_t off) const {
+    const auto n = std::uint32_t(s.size());
+    if (grid_)
+      return pair_filter::append_grid(s.x.data(), s.y.data(), s.z.data(), on_grid(i), i + 1, n, ctr, sc.list_room(),
+                                       sc.out(), off);
+    return pair_filter::append_rounded(s.x.data(), s.y.data(), s.z.data(), rounded(s.box, i), i + 1, n, ctr,
+                                       sc.list_room(), sc.out(), off);
   }
 
   // Rows [i0, i1), on every step: each row's pairs inside r_c collected one row after another, their ζ in one
@@ -298,9 +327,7 @@ class PairLoop final : public PairForces {
       sc.grow_pairs(off + m + pair_filter::kSlack);
       sc.grow_list(m + pair_filter::kSlackF);
       const pair_filter::Centre ctr = pair_filter::centre(s.box, s.x[i], s.y[i], s.z[i], rc2);
-      const std::size_t k = pair_filter::append_rounded(s.x.data(), s.y.data(), s.z.data(), rounded(s.box, i),
-                                                        i + 1, std::uint32_t(n), ctr, sc.list_room(), sc.out(),
-                                                        off) - off;
+      const std::size_t k = append_row(s, i, ctr, sc, off) - off;
       std::fill_n(sc.pi.data() + off, k, i);
       if (stream) row_slots(i, n, sc.j.data() + off, k, sc.slots.data() + off);
       sc.counts.push_back(std::uint32_t(k));
@@ -1051,6 +1078,9 @@ class PairLoop final : public PairForces {
   std::vector<double> fcx_, fcy_, fcz_;  // the conservative force per bead (cells mode: in sorted order)
   std::vector<float> xf_, yf_, zf_;      // all mode: the positions rounded (round_positions)
   float threshold_f_ = 0;
+  bool grid_ = false;                                   // all mode: this step's prefilter is the grid's
+  std::array<std::vector<std::uint16_t>, 3> grid_pos_;  // its coordinates (round_positions)
+  std::uint16_t threshold_g_ = 0;
   std::vector<double> layer_force2_;     // cells mode: Σ|F^C|² over each layer's beads
   std::vector<Scratch> scratch_;
   // cells mode

@@ -195,6 +195,86 @@ TEST(PairFilter, RoundedPrefilterKeepsExactlyTheExactFiltersPairs) {
   }
 }
 
+// The all-pairs filter with the 16-bit grid prefilter (append_grid) against the exact one (append_sparse):
+// the same pairs, bits and order, with candidates placed just inside and just outside r_c along random
+// directions and across the box's faces, positions an image or more outside the box (the grid wraps them),
+// a NaN and an infinity, rows of every length, in the paper's box, a box just over 2 r_c across (where
+// the images and the cutoff nearly meet) and a non-cubic one. Without AVX-512BW the grid serves no box and
+// append_grid is the exact filter.
+TEST(PairFilter, GridPrefilterKeepsExactlyTheExactFiltersPairs) {
+  std::mt19937_64 g(77);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (const std::array<double, 3> edges : {std::array<double, 3>{4.4, 4.4, 4.4}, {2.001, 2.001, 2.001},
+                                            {4.4, 4.84, 3.96}}) {
+    Box box;
+    box.L = edges;
+    const std::size_t n = 700;
+    Beads beads(box, n, 0, 77);
+    std::vector<double>& x = beads.x, &y = beads.y, &z = beads.z;
+    for (std::size_t k = 1; k <= 400; ++k) {
+      const double c = 2 * u(g) - 1, phi = 6.283185307179586 * u(g), sn = std::sqrt(1 - c * c);
+      const double r = 1.0 + (k % 2 ? 1 : -1) * std::pow(10.0, -12.0 + 9.0 * u(g));
+      x[k] = std::fmod(x[0] + r * sn * std::cos(phi) + box.L[0], box.L[0]);
+      y[k] = std::fmod(y[0] + r * sn * std::sin(phi) + box.L[1], box.L[1]);
+      z[k] = std::fmod(z[0] + r * c + box.L[2], box.L[2]);
+      if (k % 7 == 0) x[k] += 3 * box.L[0], y[k] -= 2 * box.L[1];  // unwrapped images: the same pair
+    }
+    x[500] = std::numeric_limits<double>::quiet_NaN();
+    z[501] = std::numeric_limits<double>::infinity();
+    double extent = std::max({box.L[0], box.L[1], box.L[2]});
+    for (std::size_t k = 0; k < n; ++k)
+      for (const double v : {x[k], y[k], z[k]})
+        if (std::isfinite(v)) extent = std::max(extent, std::abs(v));
+    const bool serves = pf::grid_serves(box, 1.0, extent);
+#if defined(__AVX512BW__) && defined(__AVX512F__) && defined(__AVX512VL__)
+    EXPECT_TRUE(serves) << "L = " << box.L[0];
+#else
+    EXPECT_FALSE(serves);
+#endif
+    std::array<std::vector<std::uint16_t>, 3> q;
+    for (std::size_t a = 0; a < 3; ++a) {
+      const std::vector<double>& p = a == 0 ? x : a == 1 ? y : z;
+      q[a].resize(n + pf::kSlackG);
+      for (std::size_t k = 0; k < n; ++k) q[a][k] = pf::to_grid(p[k], 65536.0 / box.L[a]);
+    }
+    const std::uint16_t threshold =
+        pf::grid_threshold(1.0, 65536.0 / std::min({box.L[0], box.L[1], box.L[2]}));
+    std::vector<double> lx(n + pf::kSlackF), ly(lx.size()), lz(lx.size());
+    std::vector<std::uint32_t> id(lx.size());
+    std::size_t near = 0;
+    for (const std::uint32_t centre : {0u, 7u, 350u, 500u, 699u})
+      for (const std::uint32_t lo : {0u, 1u, 5u, 17u, 33u, 650u}) {
+        const pf::Centre c = pf::centre(box, x[centre], y[centre], z[centre], 1.0);
+        const pf::Grid16 f{q[0].data(), q[1].data(), q[2].data(), q[0][centre], q[1][centre], q[2][centre],
+                           threshold};
+        Pairs a(n + pf::kSlack), b(n + pf::kSlack);
+        const std::size_t kb = pf::append_sparse(x.data(), y.data(), z.data(), lo, n, c, b.out(), 0);
+        const std::size_t ka = pf::append_grid(x.data(), y.data(), z.data(), f, lo, n, c,
+                                               {lx.data(), ly.data(), lz.data(), id.data()}, a.out(), 0);
+        expect_same(a, ka, b, kb, 0);
+        if (centre == 0) near += kb;
+      }
+    EXPECT_GT(near, 800u) << "L = " << box.L[0];  // about half the 400 placed at r_c, in each row from lo < 400
+  }
+}
+
+// The grid's coordinates: round(x·2¹⁶/L) mod 2¹⁶, the same for every image of a position, 0 where x is not
+// finite; and its threshold, one above the largest sum a pair inside r_c can reach in the paper's box.
+TEST(PairFilter, GridCoordinatesWrapAndTheThresholdBoundsTheCutoff) {
+  const double L = 4.4, scale = 65536.0 / L;
+  EXPECT_EQ(pf::to_grid(0.0, scale), 0);
+  EXPECT_EQ(pf::to_grid(L / 2, scale), 32768);
+  EXPECT_EQ(pf::to_grid(L - 1e-9, scale), 0);  // rounds up to 2¹⁶, which wraps
+  EXPECT_EQ(pf::to_grid(1.1, scale), 16384);
+  for (const double x : {0.3, 1.7, 4.1})
+    for (const int image : {-3, -1, 1, 2, 1000})
+      EXPECT_EQ(pf::to_grid(x + image * L, scale), pf::to_grid(x, scale)) << x << " " << image;
+  EXPECT_EQ(pf::to_grid(std::numeric_limits<double>::quiet_NaN(), scale), 0);
+  EXPECT_EQ(pf::to_grid(-std::numeric_limits<double>::infinity(), scale), 0);
+  // r_c·S = 14 894.5…: (14 896.5…)²/2¹⁶ = 3 386.03…, so 3 386 + 2.
+  EXPECT_EQ(pf::grid_threshold(1.0, scale), 3388);
+}
+
 // A list whose every candidate is inside r_c keeps them all, in order; one with none keeps nothing.
 TEST(PairFilter, KeepsAllOrNothing) {
   Box box;

@@ -363,6 +363,18 @@ struct ListRoom {
   std::uint32_t* id;
 };
 
+// The candidates a prefilter passed (t of them, ids in room.id, each below the row's end): their positions
+// gathered into `room` and filtered exactly a vector at a time (append_listed with min_image).
+inline std::size_t append_passed(const double* x, const double* y, const double* z, std::uint32_t t,
+                                 const Centre& c, const ListRoom& room, const Out& out, std::size_t kept) {
+  for (std::uint32_t q = 0; q < t; ++q) {
+    const std::uint32_t k = room.id[q];
+    room.x[q] = x[k], room.y[q] = y[k], room.z[q] = z[k];
+  }
+  for (std::uint32_t e = t; e < t + kSlack; ++e) room.x[e] = room.y[e] = room.z[e] = 0.0;
+  return append_listed<true>(Listed{room.x, room.y, room.z, room.id}, 0, t, c, out, kept);
+}
+
 // append_sparse with the single-precision prefilter (Rounded): the candidates it passes are gathered into
 // `room` and filtered exactly a vector at a time (append_listed with min_image): the same pairs, separations
 // and order.
@@ -370,15 +382,94 @@ inline std::size_t append_rounded(const double* x, const double* y, const double
                                   std::uint32_t lo, std::uint32_t hi, const Centre& c, const ListRoom& room,
                                   const Out& out, std::size_t kept) {
 #if defined(__AVX512F__) && defined(__AVX512VL__) || defined(__AVX2__)
-  const std::uint32_t t = maybe_ids(f, lo, hi, room.id);
-  for (std::uint32_t q = 0; q < t; ++q) {
-    const std::uint32_t k = room.id[q];
-    room.x[q] = x[k], room.y[q] = y[k], room.z[q] = z[k];
-  }
-  for (std::uint32_t e = t; e < t + kSlack; ++e) room.x[e] = room.y[e] = room.z[e] = 0.0;
-  return append_listed<true>(Listed{room.x, room.y, room.z, room.id}, 0, t, c, out, kept);
+  return append_passed(x, y, z, maybe_ids(f, lo, hi, room.id), c, room, out, kept);
 #else
   (void)f, (void)room;
+  return append_sparse(x, y, z, lo, hi, c, out, kept);
+#endif
+}
+
+// The all-pairs prefilter on a 16-bit grid: each coordinate as round(x·S) mod 2¹⁶ with S = 2¹⁶/L along its
+// axis, so that a difference taken in 16 bits wraps to the minimum image by itself, and 32 candidates go per
+// vector. Along an axis the grid difference u (the wrap picks the smallest of the images) is within 1 of d·S,
+// d the minimum-image separation: two roundings of at most ½ each, and of S·x and of L·S = 2¹⁶ far less while
+// |x·S| < 2⁴⁰. So a pair inside r_c has Σ u² < (r_c·S_max + 2)², S_max the largest scale; ⌊u²/2¹⁶⌋ (the high
+// half of the 32-bit square) is at most u²/2¹⁶, and the three of them, each at most 2¹⁴, sum in an unsigned
+// 16-bit lane. A candidate whose sum reaches grid_threshold cannot be inside r_c; those below it (inside, and
+// a few just outside) are recomputed exactly, so the kept pairs and their bits are the exact filter's.
+struct Grid16 {
+  const std::uint16_t *x, *y, *z;  // grid coordinates, readable kSlackG entries past the last
+  std::uint16_t cx, cy, cz;        // the centre's
+  std::uint16_t threshold;         // grid_threshold
+};
+
+inline constexpr std::size_t kSlackG = 32;
+
+// Whether the grid serves the box and cutoff rc with coordinates of magnitude at most `extent`: it
+// must resolve r_c into at least 2¹² steps (a box at most 16 r_c across) for the prefilter to pass few
+// candidates beyond r_c, and keep |x·S| below 2⁴⁰ for the bound above; and the build must have AVX-512BW.
+inline bool grid_serves(const Box& box, double rc, double extent) {
+#if defined(__AVX512BW__) && defined(__AVX512F__) && defined(__AVX512VL__)
+  const double smax = 65536.0 / std::min({box.L[0], box.L[1], box.L[2]});
+  return rc * smax >= 4096.0 && rc * smax <= 32768.0 && extent * smax < 0x1p40;
+#else
+  (void)box, (void)rc, (void)extent;
+  return false;
+#endif
+}
+
+// round(x·scale) mod 2¹⁶ (scale = 2¹⁶/L); 0 for a coordinate that is not finite, whose pairs the exact test
+// rejects anyway. The reduction is exact: below 2⁴⁰ the product's multiples of 2¹⁶ are whole doubles.
+inline std::uint16_t to_grid(double x, double scale) {
+  const double v = x * scale, r = v - 65536.0 * std::floor(v / 65536.0);
+  if (!(r >= 0.0 && r < 65536.0)) return 0;
+  return static_cast<std::uint16_t>(static_cast<std::uint32_t>(std::floor(r + 0.5)) & 0xffffu);
+}
+
+// The grid prefilter's bound for cutoff rc with the largest scale smax: ⌊(rc·smax + 2)²/2¹⁶⌋ + 2, one above
+// what Σ⌊u²/2¹⁶⌋ can reach inside r_c with room for the rounding of this computation.
+inline std::uint16_t grid_threshold(double rc, double smax) {
+  const double b = (rc * smax + 2.0) * (rc * smax + 2.0) / 65536.0;
+  return static_cast<std::uint16_t>(std::min(65535.0, std::floor(b) + 2.0));
+}
+
+#if defined(__AVX512BW__) && defined(__AVX512F__) && defined(__AVX512VL__)
+// The candidates k in [lo, hi) the grid test passes, in order, to id; returns their number. id must have room
+// for hi − lo entries and kSlackF more.
+inline std::uint32_t grid_ids(const Grid16& g, std::uint32_t lo, std::uint32_t hi, std::uint32_t* id) {
+  const __m512i xi = _mm512_set1_epi16(static_cast<short>(g.cx)), yi = _mm512_set1_epi16(static_cast<short>(g.cy)),
+                zi = _mm512_set1_epi16(static_cast<short>(g.cz)),
+                t = _mm512_set1_epi16(static_cast<short>(g.threshold));
+  const __m512i iota = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+  auto term = [](const std::uint16_t* p, __m512i c) {
+    const __m512i u = _mm512_abs_epi16(_mm512_sub_epi16(_mm512_loadu_si512(p), c));  // −2¹⁵ reads as 2¹⁵
+    return _mm512_mulhi_epu16(u, u);
+  };
+  std::uint32_t n = 0;
+  for (std::uint32_t k = lo; k < hi; k += 32) {
+    const __m512i sum = _mm512_add_epi16(_mm512_add_epi16(term(g.x + k, xi), term(g.y + k, yi)), term(g.z + k, zi));
+    std::uint32_t m = _mm512_cmplt_epu16_mask(sum, t);
+    if (hi - k < 32) m &= (1u << (hi - k)) - 1;
+    for (std::uint32_t half = 0; half < 2; ++half) {
+      const auto h = static_cast<__mmask16>(m >> (16 * half));
+      const __m512i j = _mm512_add_epi32(_mm512_set1_epi32(static_cast<int>(k + 16 * half)), iota);
+      _mm512_storeu_si512(id + n, _mm512_maskz_compress_epi32(h, j));
+      n += std::uint32_t(std::popcount(unsigned(h)));
+    }
+  }
+  return n;
+}
+#endif
+
+// append_sparse with the grid prefilter (Grid16; only where grid_serves): the same pairs, separations and
+// order.
+inline std::size_t append_grid(const double* x, const double* y, const double* z, const Grid16& g,
+                               std::uint32_t lo, std::uint32_t hi, const Centre& c, const ListRoom& room,
+                               const Out& out, std::size_t kept) {
+#if defined(__AVX512BW__) && defined(__AVX512F__) && defined(__AVX512VL__)
+  return append_passed(x, y, z, grid_ids(g, lo, hi, room.id), c, room, out, kept);
+#else
+  (void)g, (void)room;
   return append_sparse(x, y, z, lo, hi, c, out, kept);
 #endif
 }
