@@ -1,5 +1,6 @@
 #include "dpdrng/dpd/system.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -31,11 +32,21 @@ inline void wrap1(double& x, std::int32_t& img, double L) {
 
 void System::wrap() { wrap(0, size()); }
 
+// Each coordinate wraps on its own, so the few that left the box in a step are found a block at a time by a
+// count that vectorises, and only a block that has one is visited coordinate by coordinate.
 void System::wrap(std::size_t lo, std::size_t hi) {
-  for (std::size_t i = lo; i < hi; ++i) {
-    wrap1(x[i], ix[i], box.L[0]);
-    wrap1(y[i], iy[i], box.L[1]);
-    wrap1(z[i], iz[i], box.L[2]);
+  constexpr std::size_t kBlock = 32;
+  for (int a = 0; a < 3; ++a) {
+    double* p = (a == 0 ? x : a == 1 ? y : z).data();
+    std::int32_t* img = (a == 0 ? ix : a == 1 ? iy : iz).data();
+    const double L = box.L[std::size_t(a)];
+    for (std::size_t b = lo; b < hi; b += kBlock) {
+      const std::size_t e = std::min(hi, b + kBlock);
+      int out = 0;
+      for (std::size_t i = b; i < e; ++i) out += !(p[i] >= 0 && p[i] < L);
+      if (out == 0) continue;
+      for (std::size_t i = b; i < e; ++i) wrap1(p[i], img[i], L);
+    }
   }
 }
 

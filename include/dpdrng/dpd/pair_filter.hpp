@@ -3,9 +3,11 @@
 // into one list, pass a SIMD vector at a time (separations, r²) and the pairs inside r_c are appended,
 // compacted in order, to the output arrays: no per-candidate stores, no branch per candidate, one compress
 // (AVX-512) or table permute (AVX2) per vector; cells whose stencil cannot wrap skip min_image. All pairs: a
-// bit mask per 64 candidates, the few kept recomputed. Every lane does the scalar code's IEEE operations in
-// the scalar order (min_image, then (a·a + b·b) + c·c; contraction is off), so the kept pairs and their
-// separations are the scalar loop's bits on any of the three paths, and the native and portable builds agree.
+// prefilter (on a 16-bit grid with AVX-512BW, in single precision otherwise) passes every candidate inside r_c
+// and a few beyond, which the exact filter then tests; without SIMD, a bit mask per 64 candidates, the few
+// kept recomputed. Every lane does the scalar code's IEEE operations in the scalar order (min_image, then
+// (a·a + b·b) + c·c; contraction is off), so the kept pairs and their separations are the scalar loop's bits
+// on any of the paths, and the native and portable builds agree.
 #include <bit>
 #include <cmath>
 #include <cstddef>
