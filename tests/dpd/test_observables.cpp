@@ -85,9 +85,9 @@ TEST(Rdf, CellListCountsEqualBruteForceForAnyTeamAndIdealGasIsFlat) {
 
 // A random walk of 200 beads sampled 1 101 times: the recorder's curve and its leave-one-group-out curves equal,
 // bit for bit, the definition summed one origin and one lag at a time, coordinate after coordinate, with the
-// recorder's origins (every second frame: at most 400 origins), lags (up to half the frames) and groups of beads
-// (kStatBlocks contiguous ones). The lags are not a multiple of any register block, and a group's coordinates
-// span several transposed chunks.
+// recorder's origins (every ⌊1 100/400⌋ = 2nd frame), lags (up to half the frames) and groups of beads
+// (kStatBlocks contiguous ones). The lags are not a multiple of any register block, and a group's 30 coordinates
+// span two transposed chunks (of ⌊2¹⁵/1 101⌋ = 29).
 TEST(Msd, CurvesEqualTheDefinitionSummedOneLagAtATime) {
   const std::size_t n = 200, nf = 1101;
   System s = make_fluid(n, Box{{6.0, 6.0, 6.0}}, 1.0, 5);
