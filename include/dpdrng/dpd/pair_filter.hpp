@@ -3,7 +3,7 @@
 // into one list, pass a SIMD vector at a time (separations, r²) and the pairs inside r_c are appended,
 // compacted in order, to the output arrays: no per-candidate stores, no branch per candidate, one compress
 // (AVX-512) or table permute (AVX2) per vector; cells whose stencil cannot wrap skip min_image. All pairs: a
-// prefilter (on a 16-bit grid with AVX-512BW, in single precision otherwise) passes every candidate inside r_c
+// prefilter (on a 16-bit grid, in single precision where the grid cannot serve) passes every candidate inside r_c
 // and a few beyond, which the exact filter then tests; without SIMD, a bit mask per 64 candidates, the few
 // kept recomputed. Every lane does the scalar code's IEEE operations in the scalar order (min_image, then
 // (a·a + b·b) + c·c; contraction is off), so the kept pairs and their separations are the scalar loop's bits
@@ -393,12 +393,13 @@ inline std::size_t append_rounded(const double* x, const double* y, const double
 
 // The all-pairs prefilter on a 16-bit grid: each coordinate as round(x·S) mod 2¹⁶ with S = 2¹⁶/L along its
 // axis, so that a difference taken in 16 bits wraps to the minimum image by itself, and 32 candidates go per
-// vector. Along an axis the grid difference u (the wrap picks the smallest of the images) is within 1 of d·S,
-// d the minimum-image separation: two roundings of at most ½ each, and of S·x and of L·S = 2¹⁶ far less while
-// |x·S| < 2⁴⁰. So a pair inside r_c has Σ u² < (r_c·S_max + 2)², S_max the largest scale; ⌊u²/2¹⁶⌋ (the high
-// half of the 32-bit square) is at most u²/2¹⁶, and the three of them, each at most 2¹⁴, sum in an unsigned
-// 16-bit lane. A candidate whose sum reaches grid_threshold cannot be inside r_c; those below it (inside, and
-// a few just outside) are recomputed exactly, so the kept pairs and their bits are the exact filter's.
+// vector (16 with AVX2). Along an axis the grid difference u (the wrap picks the smallest of the images) is
+// within 1 of d·S, d the minimum-image separation: two roundings of at most ½ each, and of S·x and of L·S =
+// 2¹⁶ far less while |x·S| < 2⁴⁰. So a pair inside r_c has Σ u² < (r_c·S_max + 2)², S_max the largest scale;
+// ⌊u²/2¹⁶⌋ (the high half of the 32-bit square) is at most u²/2¹⁶, and the three of them, each at most 2¹⁴,
+// sum in an unsigned 16-bit lane. A candidate whose sum reaches grid_threshold cannot be inside r_c; those
+// below it (inside, and a few just outside) are recomputed exactly, so the kept pairs and their bits are the
+// exact filter's.
 struct Grid16 {
   const std::uint16_t *x, *y, *z;  // grid coordinates, readable kSlackG entries past the last
   std::uint16_t cx, cy, cz;        // the centre's
@@ -409,9 +410,9 @@ inline constexpr std::size_t kSlackG = 32;
 
 // Whether the grid serves the box and cutoff rc with coordinates of magnitude at most `extent`: it
 // must resolve r_c into at least 2¹² steps (a box at most 16 r_c across) for the prefilter to pass few
-// candidates beyond r_c, and keep |x·S| below 2⁴⁰ for the bound above; and the build must have AVX-512BW.
+// candidates beyond r_c, and keep |x·S| below 2⁴⁰ for the bound above; and the build must have AVX2.
 inline bool grid_serves(const Box& box, double rc, double extent) {
-#if defined(__AVX512BW__) && defined(__AVX512F__) && defined(__AVX512VL__)
+#if defined(__AVX512BW__) && defined(__AVX512F__) && defined(__AVX512VL__) || defined(__AVX2__)
   const double smax = 65536.0 / std::min({box.L[0], box.L[1], box.L[2]});
   return rc * smax >= 4096.0 && rc * smax <= 32768.0 && extent * smax < 0x1p40;
 #else
@@ -461,6 +462,32 @@ inline std::uint32_t grid_ids(const Grid16& g, std::uint32_t lo, std::uint32_t h
   }
   return n;
 }
+#elif defined(__AVX2__)
+// As above, 16 candidates a vector: sum < threshold as min(sum, threshold − 1) == sum (AVX2 compares 16-bit
+// lanes as signed only, and a sum reaches 3·2¹⁴), the lanes' results packed to bytes for one mask.
+inline std::uint32_t grid_ids(const Grid16& g, std::uint32_t lo, std::uint32_t hi, std::uint32_t* id) {
+  const __m256i xi = _mm256_set1_epi16(static_cast<short>(g.cx)), yi = _mm256_set1_epi16(static_cast<short>(g.cy)),
+                zi = _mm256_set1_epi16(static_cast<short>(g.cz)),
+                below = _mm256_set1_epi16(static_cast<short>(g.threshold - 1));
+  auto term = [](const std::uint16_t* p, __m256i c) {
+    const __m256i d = _mm256_sub_epi16(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(p)), c);
+    const __m256i u = _mm256_abs_epi16(d);  // −2¹⁵ reads as 2¹⁵
+    return _mm256_mulhi_epu16(u, u);
+  };
+  std::uint32_t n = 0;
+  for (std::uint32_t k = lo; k < hi; k += 16) {
+    const __m256i sum = _mm256_add_epi16(_mm256_add_epi16(term(g.x + k, xi), term(g.y + k, yi)), term(g.z + k, zi));
+    const __m256i in = _mm256_cmpeq_epi16(_mm256_min_epu16(sum, below), sum);
+    const __m128i bytes = _mm_packs_epi16(_mm256_castsi256_si128(in), _mm256_extracti128_si256(in, 1));
+    unsigned m = unsigned(_mm_movemask_epi8(bytes));
+    if (hi - k < 16) m &= (1u << (hi - k)) - 1;
+    isa_f::put_ids(id + n, k, m & 0xffu);
+    n += std::uint32_t(std::popcount(m & 0xffu));
+    isa_f::put_ids(id + n, k + 8, m >> 8);
+    n += std::uint32_t(std::popcount(m >> 8));
+  }
+  return n;
+}
 #endif
 
 // append_sparse with the grid prefilter (Grid16; only where grid_serves): the same pairs, separations and
@@ -468,7 +495,7 @@ inline std::uint32_t grid_ids(const Grid16& g, std::uint32_t lo, std::uint32_t h
 inline std::size_t append_grid(const double* x, const double* y, const double* z, const Grid16& g,
                                std::uint32_t lo, std::uint32_t hi, const Centre& c, const ListRoom& room,
                                const Out& out, std::size_t kept) {
-#if defined(__AVX512BW__) && defined(__AVX512F__) && defined(__AVX512VL__)
+#if defined(__AVX512BW__) && defined(__AVX512F__) && defined(__AVX512VL__) || defined(__AVX2__)
   return append_passed(x, y, z, grid_ids(g, lo, hi, room.id), c, room, out, kept);
 #else
   (void)g, (void)room;
